@@ -1,0 +1,321 @@
+#include "filter_segment.h"
+
+#include "common/face_adjacency.h"
+#include "common/merge_segments.h"
+#include "common/mesh_input_problem.h"
+#include "common/move_faces_to_new_segment.h"
+#include "common/segment_attribute.h"
+#include "common/segment_by_normal_angle.h"
+#include "common/segment_primitive_attribute.h"
+#include "common/split_segments_by_plane.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace primitive_edit;
+
+namespace {
+
+int segment_count(const std::vector<int>& segment_of_face)
+{
+  int k = 0;
+  for (int s : segment_of_face)
+    k = std::max(k, s + 1);
+  return k;
+}
+
+// The segments of a mesh, or one segment holding every live face when it has none yet: the merge and
+// split filters then work on an unsegmented mesh as on a one-segment one.
+bool load_segments(CMeshO& m, std::vector<int>& segment_of_face)
+{
+  if (read_segment_ids(m, segment_of_face))
+    return true;
+  segment_of_face.assign(m.face.size(), -1);
+  for (size_t i = 0; i < m.face.size(); ++i)
+    if (!m.face[i].IsD())
+      segment_of_face[i] = 0;
+  return false;
+}
+
+std::vector<int> selected_faces(const CMeshO& m)
+{
+  std::vector<int> faces;
+  for (size_t i = 0; i < m.face.size(); ++i)
+    if (!m.face[i].IsD() && m.face[i].IsS())
+      faces.push_back(int(i));
+  return faces;
+}
+
+std::vector<int> segments_of_faces(const std::vector<int>& segment_of_face, const std::vector<int>& faces)
+{
+  std::set<int> segments;
+  for (int f : faces)
+    if (segment_of_face[f] >= 0)
+      segments.insert(segment_of_face[f]);
+  return std::vector<int>(segments.begin(), segments.end());
+}
+
+} // namespace
+
+FilterSegmentPlugin::FilterSegmentPlugin()
+{
+  typeList << SEGMENT_AUTO << SEGMENT_MERGE_SELECTED << SEGMENT_SPLIT_BY_PLANE << SEGMENT_SPLIT_BY_SELECTION
+           << SEGMENT_SELECT;
+  for (FilterIDType t : types())
+    actionList << new QAction(filterName(t), this);
+}
+
+QString FilterSegmentPlugin::pluginName() const { return "FilterSegment"; }
+
+QString FilterSegmentPlugin::filterName(FilterIDType filter) const
+{
+  switch (filter) {
+  case SEGMENT_AUTO: return "Segment: Auto by Normal Angle";
+  case SEGMENT_MERGE_SELECTED: return "Segment: Merge Selected";
+  case SEGMENT_SPLIT_BY_PLANE: return "Segment: Split by Plane";
+  case SEGMENT_SPLIT_BY_SELECTION: return "Segment: Split by Selection";
+  case SEGMENT_SELECT: return "Segment: Select Segment";
+  }
+  return "";
+}
+
+QString FilterSegmentPlugin::filterInfo(FilterIDType filter) const
+{
+  const QString storage =
+      "<br><br>The segment of each face is kept in the per-face attribute <i>SegmentId</i>, mirrored into face "
+      "quality (save it with the PLY's face quality to keep it) and shown as face colour, neighbours in "
+      "different colours. Ids are dense, from 0.";
+  switch (filter) {
+  case SEGMENT_AUTO:
+    return "Splits the mesh into segments by shape: a flood fill over adjacent faces, where two neighbouring "
+           "faces join the same segment when the angle between their normals is below <i>Angle</i>. A smaller "
+           "angle gives more segments.<br>Raw scans have noisy normals: they are first smoothed over the "
+           "surface, and segments smaller than <i>Min Segment Size</i> are absorbed by the neighbour they "
+           "share the longest border with.<br><br>See: <i>J. Yang, K. Oh, H.-I. Choi</i>, <b>\"Mesh Editing "
+           "with an Intuitive User Interface\"</b>, section 2.1." + storage;
+  case SEGMENT_MERGE_SELECTED:
+    return "Every segment touched by the face selection becomes one segment." + storage;
+  case SEGMENT_SPLIT_BY_PLANE:
+    return "Cuts a segment (or the segments of the selected faces) by a plane: the faces on each side, and "
+           "each connected piece of them, become segments of their own. A face goes to the side of its "
+           "centroid. The batch form of drawing a split line in the edit tool." + storage;
+  case SEGMENT_SPLIT_BY_SELECTION:
+    return "The selected faces leave their segments and form one new segment." + storage;
+  case SEGMENT_SELECT:
+    return "Selects the faces (and their vertices) of one segment, so that later filters act on it.";
+  }
+  return "";
+}
+
+MeshFilterInterface::FilterClass FilterSegmentPlugin::getClass(QAction* action)
+{
+  return ID(action) == SEGMENT_SELECT ? Selection : FaceColoring;
+}
+
+int FilterSegmentPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
+
+int FilterSegmentPlugin::postCondition(QAction* action) const
+{
+  if (ID(action) == SEGMENT_SELECT)
+    return MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_VERTFLAGSELECT;
+  return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+}
+
+void FilterSegmentPlugin::initParameterSet(QAction* action, MeshModel& m, RichParameterList& parlst)
+{
+  const SegmentByNormalAngleParams defaults;
+  switch (ID(action)) {
+  case SEGMENT_AUTO:
+    parlst.addParam(RichFloat("Angle", float(defaults.angle_deg), "Angle (degrees)",
+                              "Two neighbouring faces join the same segment when the angle between their "
+                              "(smoothed) normals is below this. Smaller gives more segments. Range 0-180."));
+    parlst.addParam(RichInt("NormalSmoothing", defaults.smoothing_iterations, "Normal Smoothing Steps",
+                            "Passes of face normal averaging over neighbours before the fill; scans from "
+                            "marching cubes need a few. 0 uses the raw face normals as in the paper."));
+    parlst.addParam(RichInt("MinSegmentFaces", defaults.min_segment_faces, "Min Segment Size (faces)",
+                            "Segments with fewer faces are absorbed by the neighbouring segment they share "
+                            "the longest border with. 0 or 1 keeps every segment."));
+    break;
+  case SEGMENT_SPLIT_BY_PLANE:
+    parlst.addParam(RichInt("Segment", -1, "Segment",
+                            "Id of the segment to cut; -1 cuts the segments of the selected faces."));
+    parlst.addParam(RichPoint3f("PlanePoint", m.cm.bbox.Center(), "Plane Point", "A point of the cutting plane."));
+    parlst.addParam(RichPoint3f("PlaneNormal", Point3m(1, 0, 0), "Plane Normal",
+                                "The normal of the cutting plane; need not be unit length, must not be zero."));
+    break;
+  case SEGMENT_SELECT:
+    parlst.addParam(RichInt("Segment", 0, "Segment", "Id of the segment to select (0 to segment count - 1)."));
+    break;
+  default:
+    break;
+  }
+}
+
+bool FilterSegmentPlugin::fail(const QString& message)
+{
+  // meshlabserver prints only the log of a failed filter, the GUI shows errorMessage: say it in both.
+  errorMessage = message;
+  Log(GLLogStream::WARNING, qUtf8Printable(message));
+  return false;
+}
+
+bool FilterSegmentPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parlst,
+                                      vcg::CallBackPos* cb)
+{
+  MeshModel* mm = md.mm();
+  if (mm == nullptr)
+    return fail(filterName(action) + ": there is no mesh.");
+  const std::string problem = mesh_input_problem(mm->cm);
+  if (!problem.empty())
+    return fail(filterName(action) + ": " + QString::fromStdString(problem) + ".");
+  switch (ID(action)) {
+  case SEGMENT_AUTO: return autoSegment(*mm, parlst, cb);
+  case SEGMENT_MERGE_SELECTED: return mergeSelected(*mm);
+  case SEGMENT_SPLIT_BY_PLANE: return splitByPlane(*mm, parlst);
+  case SEGMENT_SPLIT_BY_SELECTION: return splitBySelection(*mm);
+  case SEGMENT_SELECT: return selectSegment(*mm, parlst);
+  }
+  return fail("Unknown filter.");
+}
+
+void FilterSegmentPlugin::storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face)
+{
+  mm.updateDataMask(MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR);
+  write_segment_ids(mm.cm, segment_of_face);
+  // Ids have changed meaning: primitives recorded for the old segments no longer apply.
+  clear_segment_primitives(mm.cm);
+}
+
+bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& parlst, vcg::CallBackPos* cb)
+{
+  SegmentByNormalAngleParams params;
+  params.angle_deg = parlst.getFloat("Angle");
+  params.smoothing_iterations = parlst.getInt("NormalSmoothing");
+  params.min_segment_faces = parlst.getInt("MinSegmentFaces");
+  if (!(params.angle_deg > 0 && params.angle_deg < 180))
+    return fail(QString("Segment: Auto by Normal Angle: Angle must be between 0 and 180 degrees, not %1.")
+                    .arg(params.angle_deg));
+  if (params.smoothing_iterations < 0 || params.smoothing_iterations > 1000)
+    return fail(QString("Segment: Auto by Normal Angle: Normal Smoothing Steps must be 0 to 1000, not %1.")
+                    .arg(params.smoothing_iterations));
+  if (params.min_segment_faces < 0)
+    return fail(QString("Segment: Auto by Normal Angle: Min Segment Size must not be negative, not %1.")
+                    .arg(params.min_segment_faces));
+
+  std::vector<int> before;
+  const int segments_before = read_segment_ids(mm.cm, before) ? segment_count(before) : 0;
+  std::vector<int> segment_of_face;
+  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, cb);
+  storeSegments(mm, segment_of_face);
+  Log("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
+      "%d smoothing steps, min size %d faces.",
+      mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces);
+  return true;
+}
+
+bool FilterSegmentPlugin::mergeSelected(MeshModel& mm)
+{
+  const std::vector<int> faces = selected_faces(mm.cm);
+  if (faces.empty())
+    return fail("Segment: Merge Selected: no face is selected; select faces of the segments to merge.");
+  std::vector<int> segment_of_face;
+  if (!load_segments(mm.cm, segment_of_face))
+    Log("Segment: Merge Selected: the mesh has no segments yet; all faces are one segment.");
+  const int before = segment_count(segment_of_face);
+  const std::vector<int> segments = segments_of_faces(segment_of_face, faces);
+  if (segments.size() < 2) {
+    Log("Segment: Merge Selected: the selection touches one segment only; nothing to merge (%d segments).", before);
+    return true;
+  }
+  int moved = 0;
+  for (int s : segment_of_face)
+    moved += (s >= 0 && s != segments.front() && std::binary_search(segments.begin(), segments.end(), s));
+  const int after = merge_segments(segment_of_face, segments);
+  storeSegments(mm, segment_of_face);
+  Log("Segment: Merge Selected: %d segments merged into one, %d faces moved; %d segments before, %d after.",
+      int(segments.size()), moved, before, after);
+  return true;
+}
+
+bool FilterSegmentPlugin::splitByPlane(MeshModel& mm, const RichParameterList& parlst)
+{
+  const int segment = parlst.getInt("Segment");
+  const Point3m p = parlst.getPoint3m("PlanePoint");
+  const Point3m n = parlst.getPoint3m("PlaneNormal");
+  const Eigen::Vector3d point(p[0], p[1], p[2]);
+  Eigen::Vector3d normal(n[0], n[1], n[2]);
+  if (!point.allFinite() || !normal.allFinite() || normal.norm() < 1e-12)
+    return fail("Segment: Split by Plane: the plane needs a finite point and a non-zero normal.");
+  normal.normalize();
+
+  std::vector<int> segment_of_face;
+  if (!load_segments(mm.cm, segment_of_face))
+    Log("Segment: Split by Plane: the mesh has no segments yet; all faces are one segment.");
+  const int before = segment_count(segment_of_face);
+  std::vector<int> segments;
+  if (segment == -1) {
+    segments = segments_of_faces(segment_of_face, selected_faces(mm.cm));
+    if (segments.empty())
+      return fail("Segment: Split by Plane: Segment is -1 but no face is selected; select faces of the "
+                  "segment to cut or give its id.");
+  } else if (segment < 0 || segment >= before) {
+    return fail(QString("Segment: Split by Plane: there is no segment %1; ids go from 0 to %2.")
+                    .arg(segment).arg(before - 1));
+  } else {
+    segments.push_back(segment);
+  }
+  const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
+  const int after = split_segments_by_plane(mm.cm, adjacency, segment_of_face, segments, point, normal);
+  storeSegments(mm, segment_of_face);
+  Log("Segment: Split by Plane: %d segment(s) cut into %d pieces; %d segments before, %d after.",
+      int(segments.size()), int(segments.size()) + after - before, before, after);
+  return true;
+}
+
+bool FilterSegmentPlugin::splitBySelection(MeshModel& mm)
+{
+  const std::vector<int> faces = selected_faces(mm.cm);
+  if (faces.empty())
+    return fail("Segment: Split by Selection: no face is selected; select the faces of the new segment.");
+  std::vector<int> segment_of_face;
+  if (!load_segments(mm.cm, segment_of_face))
+    Log("Segment: Split by Selection: the mesh had no segments yet; the other faces are one segment.");
+  const int before = segment_count(segment_of_face);
+  const int after = move_faces_to_new_segment(segment_of_face, faces);
+  storeSegments(mm, segment_of_face);
+  Log("Segment: Split by Selection: %d faces moved to a new segment; %d segments before, %d after.",
+      int(faces.size()), before, after);
+  return true;
+}
+
+bool FilterSegmentPlugin::selectSegment(MeshModel& mm, const RichParameterList& parlst)
+{
+  const int segment = parlst.getInt("Segment");
+  std::vector<int> segment_of_face;
+  if (!read_segment_ids(mm.cm, segment_of_face))
+    return fail("Segment: Select Segment: the mesh has no segments; run Segment: Auto by Normal Angle first.");
+  const int count = segment_count(segment_of_face);
+  if (segment < 0 || segment >= count)
+    return fail(QString("Segment: Select Segment: there is no segment %1; ids go from 0 to %2.")
+                    .arg(segment).arg(count - 1));
+  CMeshO& m = mm.cm;
+  int selected = 0;
+  for (auto& v : m.vert)
+    v.ClearS();
+  for (size_t i = 0; i < m.face.size(); ++i) {
+    CFaceO& f = m.face[i];
+    if (f.IsD())
+      continue;
+    if (segment_of_face[i] == segment) {
+      f.SetS();
+      for (int k = 0; k < 3; ++k)
+        f.V(k)->SetS();
+      ++selected;
+    } else {
+      f.ClearS();
+    }
+  }
+  Log("Segment: Select Segment: segment %d selected, %d faces.", segment, selected);
+  return true;
+}

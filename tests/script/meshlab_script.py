@@ -1,0 +1,189 @@
+"""Helpers for the meshlabserver script tests: PLY reading/writing, .mlx writing, running meshlabserver.
+
+Standard library only. meshlabserver 2020.09 asserts unless a script lists every parameter of a filter,
+so scripts are written from complete parameter lists.
+"""
+import argparse
+import os
+import struct
+import subprocess
+import xml.sax.saxutils as saxutils
+
+PLY_TYPES = {
+    "char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h",
+    "ushort": "H", "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I",
+    "float": "f", "float32": "f", "double": "d", "float64": "d",
+}
+
+
+def test_args():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--meshlabserver", required=True)
+    parser.add_argument("--workdir", required=True)
+    args = parser.parse_args()
+    os.makedirs(args.workdir, exist_ok=True)
+    return args
+
+
+def write_ply(path, vertices, faces, face_quality=None):
+    """ASCII PLY with float vertices and triangle faces (and per-face quality if given)."""
+    with open(path, "w") as out:
+        out.write("ply\nformat ascii 1.0\n")
+        out.write("element vertex %d\nproperty float x\nproperty float y\nproperty float z\n" % len(vertices))
+        out.write("element face %d\nproperty list uchar int vertex_indices\n" % len(faces))
+        if face_quality is not None:
+            out.write("property float quality\n")
+        out.write("end_header\n")
+        for v in vertices:
+            out.write("%.9g %.9g %.9g\n" % tuple(v))
+        for i, f in enumerate(faces):
+            line = "3 %d %d %d" % tuple(f)
+            if face_quality is not None:
+                line += " %.9g" % face_quality[i]
+            out.write(line + "\n")
+
+
+def read_ply(path):
+    """Reads an ASCII or binary little-endian PLY. Returns (vertices, faces, face_props, vertex_props):
+    vertices as [x, y, z] lists, faces as index lists, and dicts from property name to list of values."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header") + len(b"end_header")
+    end = data.index(b"\n", end) + 1
+    header = data[:end].decode("ascii").splitlines()
+    fmt = None
+    elements = []
+    for line in header:
+        words = line.split()
+        if not words:
+            continue
+        if words[0] == "format":
+            fmt = words[1]
+        elif words[0] == "element":
+            elements.append((words[1], int(words[2]), []))
+        elif words[0] == "property":
+            if words[1] == "list":
+                elements[-1][2].append((words[4], "list", words[2], words[3]))
+            else:
+                elements[-1][2].append((words[2], words[1], None, None))
+    body = data[end:]
+    values = {}
+    if fmt == "ascii":
+        tokens = body.split()
+        pos = 0
+        for name, count, props in elements:
+            rows = []
+            for _ in range(count):
+                row = {}
+                for pname, ptype, ctype, itype in props:
+                    if ptype == "list":
+                        n = int(tokens[pos]); pos += 1
+                        row[pname] = [int(t) for t in tokens[pos:pos + n]]; pos += n
+                    else:
+                        t = tokens[pos]; pos += 1
+                        row[pname] = float(t) if PLY_TYPES[ptype] in "fd" else int(t)
+                rows.append(row)
+            values[name] = rows
+    elif fmt == "binary_little_endian":
+        pos = 0
+        for name, count, props in elements:
+            rows = []
+            for _ in range(count):
+                row = {}
+                for pname, ptype, ctype, itype in props:
+                    if ptype == "list":
+                        c = PLY_TYPES[ctype]
+                        (n,) = struct.unpack_from("<" + c, body, pos); pos += struct.calcsize(c)
+                        i = PLY_TYPES[itype]
+                        row[pname] = list(struct.unpack_from("<%d%s" % (n, i), body, pos))
+                        pos += n * struct.calcsize(i)
+                    else:
+                        c = PLY_TYPES[ptype]
+                        (row[pname],) = struct.unpack_from("<" + c, body, pos); pos += struct.calcsize(c)
+                rows.append(row)
+            values[name] = rows
+    else:
+        raise ValueError("unsupported PLY format %s" % fmt)
+    verts = values.get("vertex", [])
+    faces = values.get("face", [])
+    vertices = [[v["x"], v["y"], v["z"]] for v in verts]
+    index_key = "vertex_indices" if faces and "vertex_indices" in faces[0] else "vertex_index"
+    face_list = [f[index_key] for f in faces]
+    face_props = {}
+    for f in faces:
+        for k, v in f.items():
+            if k != index_key:
+                face_props.setdefault(k, []).append(v)
+    vertex_props = {}
+    for v in verts:
+        for k, val in v.items():
+            if k not in ("x", "y", "z"):
+                vertex_props.setdefault(k, []).append(val)
+    return vertices, face_list, face_props, vertex_props
+
+
+def param(name, value, kind, enum_values=None):
+    """One <Param> line. kind: RichInt, RichFloat, RichBool, RichString, RichEnum (give enum_values, as
+    meshlabserver reads an enum only with its list of values), RichMesh, RichPoint3f."""
+    q = saxutils.quoteattr
+    if kind == "RichEnum":
+        values = "".join(' enum_val%d=%s' % (i, q(v)) for i, v in enumerate(enum_values))
+        return '  <Param type="RichEnum" name=%s value="%d" enum_cardinality="%d"%s/>\n' % (
+            q(name), value, len(enum_values), values)
+    if kind == "RichPoint3f":
+        x, y, z = value
+        return '  <Param type="RichPoint3f" name=%s x="%.9g" y="%.9g" z="%.9g"/>\n' % (q(name), x, y, z)
+    if kind == "RichBool":
+        value = "true" if value else "false"
+    return '  <Param type=%s name=%s value=%s/>\n' % (q(kind), q(name), q(str(value)))
+
+
+def write_mlx(path, filters):
+    """filters: list of (filter name, [param(...) strings])."""
+    with open(path, "w") as out:
+        out.write("<!DOCTYPE FilterScript>\n<FilterScript>\n")
+        for name, params in filters:
+            out.write(" <filter name=%s>\n" % saxutils.quoteattr(name))
+            for p in params:
+                out.write(" " + p)
+            out.write(" </filter>\n")
+        out.write("</FilterScript>\n")
+
+
+def run_meshlabserver(meshlabserver, workdir, inputs, script, output=None, mask="fq", extra=None):
+    """Runs meshlabserver under xvfb-run. Returns (exit code, log text, console text)."""
+    log = os.path.join(workdir, os.path.basename(script) + ".log")
+    if os.path.exists(log):
+        os.remove(log)
+    cmd = ["xvfb-run", "-a", meshlabserver, "-l", log]
+    for i in inputs:
+        cmd += ["-i", i]
+    cmd += ["-s", script]
+    if output:
+        cmd += ["-o", output]
+        if mask:
+            cmd += ["-m"] + mask.split()
+    cmd += extra or []
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=900)
+    text = open(log, errors="replace").read() if os.path.exists(log) else ""
+    return proc.returncode, text, proc.stdout.decode(errors="replace")
+
+
+class Checker:
+    """Counts checks and prints the 'N passed, N failed' closing line."""
+
+    def __init__(self):
+        self.passed = 0
+        self.failed = 0
+
+    def check(self, condition, what):
+        if condition:
+            self.passed += 1
+            print("ok:", what)
+        else:
+            self.failed += 1
+            print("FAILED:", what)
+
+    def finish(self):
+        print("%d passed, %d failed" % (self.passed, self.failed))
+        raise SystemExit(1 if self.failed else 0)
