@@ -1,14 +1,22 @@
 #!/usr/bin/env bash
 # Installs what primitive-edit needs on Debian 12 and fetches MeshLab 2020.09's source (headers and
 # vcglib matching Debian's binary) into .deps/. Safe to run twice: each step is skipped when done.
+# PRIMITIVE_EDIT_EXTRA_PACKAGES="p1 p2": more Debian packages to install.
+# PRIMITIVE_EDIT_BENCH_PACKAGES=1: also OpenCASCADE, for bench/bracket/make_bracket (rebuilding the CAD
+# bracket; the bundled bench/data is committed, so nothing else needs it).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 sudo=""
 [ "$(id -u)" = 0 ] || sudo="sudo"
 
+bench_packages=""
+if [ "${PRIMITIVE_EDIT_BENCH_PACKAGES:-0}" = 1 ]; then
+  bench_packages="libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
+                  libocct-data-exchange-dev libtbb-dev"
+fi
 packages=(meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
           xvfb xauth xdotool imagemagick cmake g++ clang libclang-rt-14-dev libgtest-dev dpkg-dev
-          python3 ${PRIMITIVE_EDIT_EXTRA_PACKAGES:-})
+          python3 ${PRIMITIVE_EDIT_EXTRA_PACKAGES:-} $bench_packages)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
