@@ -1,0 +1,557 @@
+// Tests of snap_segments on the tests' mesh type and on MeshLab's CMeshO: parameter overrides, sharp
+// edges and corners, flip prevention, unsnapped segments and bad input.
+#include "common/closest_point_on_primitive.h"
+#include "common/snap_segments.h"
+#include "test_mesh.h"
+
+#include <common/ml_mesh_type.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+using namespace primitive_edit;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Soup
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> labels;
+};
+
+template <class M>
+void build_mesh(M& m, const Soup& soup)
+{
+  using CoordType = typename M::CoordType;
+  using ScalarType = typename M::ScalarType;
+  m.Clear();
+  vcg::tri::Allocator<M>::AddVertices(m, soup.points.size());
+  for (size_t i = 0; i < soup.points.size(); ++i)
+    m.vert[i].P() = CoordType(ScalarType(soup.points[i].x()), ScalarType(soup.points[i].y()),
+                              ScalarType(soup.points[i].z()));
+  vcg::tri::Allocator<M>::AddFaces(m, soup.triangles.size());
+  for (size_t f = 0; f < soup.triangles.size(); ++f)
+    for (int j = 0; j < 3; ++j)
+      m.face[f].V(j) = &m.vert[static_cast<size_t>(soup.triangles[f][static_cast<size_t>(j)])];
+}
+
+template <class C>
+Eigen::Vector3d eig(const C& c)
+{
+  return Eigen::Vector3d(double(c[0]), double(c[1]), double(c[2]));
+}
+
+template <class M>
+Eigen::Vector3d face_normal(const M& m, size_t f)
+{
+  const Eigen::Vector3d a = eig(m.face[f].cP(0));
+  return (eig(m.face[f].cP(1)) - a).cross(eig(m.face[f].cP(2)) - a);
+}
+
+// Geometric tolerance for a mesh of the given size: float coordinates (CMeshO) only hold ~7 digits.
+template <class M>
+double tolerance(double size)
+{
+  return std::is_same<typename M::ScalarType, float>::value ? 1e-5 * size : 1e-9 * size;
+}
+
+// A tube (open at both ends) around the axis through `origin` along unit `axis`, radius(angle, height)
+// giving the distance from the axis; faces point outwards.
+template <class RadiusFn>
+Soup make_tube(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double height, int around, int along,
+               RadiusFn radius)
+{
+  const Eigen::Vector3d u1 = any_orthogonal(axis), u2 = axis.cross(u1);
+  Soup s;
+  for (int k = 0; k <= along; ++k)
+    for (int j = 0; j < around; ++j) {
+      const double t = 2 * kPi * j / around, h = height * k / along;
+      s.points.push_back(origin + h * axis + radius(t, h) * (std::cos(t) * u1 + std::sin(t) * u2));
+    }
+  auto id = [&](int k, int j) { return k * around + (j % around); };
+  for (int k = 0; k < along; ++k)
+    for (int j = 0; j < around; ++j) {
+      s.triangles.push_back({id(k, j), id(k, j + 1), id(k + 1, j + 1)});
+      s.triangles.push_back({id(k, j), id(k + 1, j + 1), id(k + 1, j)});
+    }
+  s.labels.assign(s.triangles.size(), 0);
+  return s;
+}
+
+Primitive cylinder(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double radius)
+{
+  Primitive q;
+  q.type = PrimitiveType::Cylinder;
+  q.origin = origin;
+  q.axis = axis.normalized();
+  q.radius = radius;
+  return q;
+}
+
+Primitive plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
+{
+  Primitive q;
+  q.type = PrimitiveType::Plane;
+  q.origin = origin;
+  q.axis = normal.normalized();
+  return q;
+}
+
+// A box [0,L] tessellated on a lattice of step h, edges rounded with radius `round` and every vertex
+// shifted by uniform noise, then rotated by `rot` and moved by `shift`. Labels: side 2a (axis a at 0) and
+// 2a+1 (axis a at L[a]); lattice[v] is the vertex's exact position on the box before rounding/noise
+// (before rotation), bound[v] how many of its coordinates are at a bound (1 side, 2 edge, 3 corner).
+struct Box
+{
+  Soup soup;
+  std::vector<Eigen::Vector3d> lattice;
+  std::vector<int> bound;
+  std::vector<std::optional<Primitive>> planes;
+};
+
+Box make_box(const Eigen::Vector3d& size, double h, double round, double noise, const Eigen::Matrix3d& rot,
+             const Eigen::Vector3d& shift)
+{
+  Box box;
+  const Eigen::Vector3i n = (size / h).array().round().cast<int>();
+  std::vector<int> index(static_cast<size_t>((n.x() + 1) * (n.y() + 1) * (n.z() + 1)), -1);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-noise, noise);
+  auto at = [&](const Eigen::Vector3i& c) -> int& {
+    return index[static_cast<size_t>((c.x() * (n.y() + 1) + c.y()) * (n.z() + 1) + c.z())];
+  };
+  for (int i = 0; i <= n.x(); ++i)
+    for (int j = 0; j <= n.y(); ++j)
+      for (int k = 0; k <= n.z(); ++k) {
+        const Eigen::Vector3i c(i, j, k);
+        int bound = 0;
+        for (int a = 0; a < 3; ++a)
+          bound += (c[a] == 0 || c[a] == n[a]) ? 1 : 0;
+        if (bound == 0)
+          continue;
+        const Eigen::Vector3d x = c.cast<double>().cwiseProduct(size).cwiseQuotient(n.cast<double>());
+        // Rounded box: the point at distance `round` from the box shrunk by `round`.
+        const Eigen::Vector3d inner = x.cwiseMax(Eigen::Vector3d::Constant(round)).cwiseMin((size.array() - round).matrix());
+        const Eigen::Vector3d rounded = inner + round * (x - inner).normalized();
+        at(c) = static_cast<int>(box.soup.points.size());
+        box.soup.points.push_back(rot * (rounded + Eigen::Vector3d(u(rng), u(rng), u(rng))) + shift);
+        box.lattice.push_back(x);
+        box.bound.push_back(bound);
+      }
+  for (int side = 0; side < 6; ++side) {
+    const int a = side / 2, ua = (a + 1) % 3, va = (a + 2) % 3;
+    const bool positive = side % 2 == 1;
+    for (int iu = 0; iu < n[ua]; ++iu)
+      for (int iv = 0; iv < n[va]; ++iv) {
+        auto corner = [&](int du, int dv) {
+          Eigen::Vector3i c;
+          c[a] = positive ? n[a] : 0;
+          c[ua] = iu + du;
+          c[va] = iv + dv;
+          return at(c);
+        };
+        const int q00 = corner(0, 0), q10 = corner(1, 0), q11 = corner(1, 1), q01 = corner(0, 1);
+        if (positive) {
+          box.soup.triangles.push_back({q00, q10, q11});
+          box.soup.triangles.push_back({q00, q11, q01});
+        } else {
+          box.soup.triangles.push_back({q00, q11, q10});
+          box.soup.triangles.push_back({q00, q01, q11});
+        }
+        box.soup.labels.push_back(side);
+        box.soup.labels.push_back(side);
+      }
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    normal[a] = positive ? 1 : -1;
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    origin[a] = positive ? size[a] : 0;
+    box.planes.push_back(plane(rot * origin + shift, rot * normal));
+  }
+  return box;
+}
+
+template <class M>
+class SnapSegmentsTest : public ::testing::Test {};
+
+using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+TYPED_TEST_SUITE(SnapSegmentsTest, MeshTypes, );
+
+} // namespace
+
+// The example: a tube fitted at radius 4.8, edited to radius 5, must become a radius-5 cylinder.
+TYPED_TEST(SnapSegmentsTest, CylinderRadiusOverride)
+{
+  using M = TypeParam;
+  const Eigen::Vector3d origin(1, -2, 0.5), axis = Eigen::Vector3d(1, 2, 2).normalized();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  const Soup tube = make_tube(origin, axis, 10.0, 64, 40, [&](double, double) { return 4.8 + noise(rng); });
+  M m;
+  build_mesh(m, tube);
+  const Primitive edited = cylinder(origin, axis, 5.0);
+  const SnapReport report = snap_segments(m, tube.labels, {edited});
+  EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()));
+  EXPECT_EQ(report.edge_vertices, 0);
+  EXPECT_EQ(report.reverted_vertices, 0);
+  double mean = 0, worst = 0;
+  for (const auto& v : m.vert) {
+    const double d = std::abs(signed_distance_to_primitive(edited, eig(v.cP())));
+    mean += d;
+    worst = std::max(worst, d);
+  }
+  mean /= double(m.vert.size());
+  EXPECT_LT(mean, tolerance<M>(10.0));
+  EXPECT_LT(worst, tolerance<M>(10.0));
+  EXPECT_GT(report.mean_displacement, 0.15);
+  EXPECT_LT(report.max_displacement, 0.26);
+}
+
+// Blurred box edges come out sharp: corners at the exact corners, edge vertices on the edge lines.
+TYPED_TEST(SnapSegmentsTest, BoxEdgesAndCornersBecomeSharp)
+{
+  using M = TypeParam;
+  const Eigen::Matrix3d rot =
+      (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  const Eigen::Vector3d shift(2, -1, 3);
+  const Box box = make_box({10, 6, 4}, 0.25, 0.3, 0.02, rot, shift);
+  M m;
+  build_mesh(m, box.soup);
+  const SnapReport report = snap_segments(m, box.soup.labels, box.planes);
+
+  int corners = 0, edges = 0;
+  for (size_t v = 0; v < m.vert.size(); ++v) {
+    const Eigen::Vector3d x = eig(m.vert[v].cP());
+    const Eigen::Vector3d exact = rot * box.lattice[v] + shift;
+    if (box.bound[v] == 3) {
+      ++corners;
+      EXPECT_LT((x - exact).norm(), 1e-4) << "corner " << v;
+    } else if (box.bound[v] == 2) {
+      ++edges;
+      // The edge runs along the one axis whose lattice coordinate is not at a bound.
+      Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+      for (int a = 0; a < 3; ++a)
+        if (box.lattice[v][a] > 1e-9 && box.lattice[v][a] < Eigen::Vector3d(10, 6, 4)[a] - 1e-9)
+          dir[a] = 1;
+      dir = rot * dir;
+      const Eigen::Vector3d off = x - exact;
+      EXPECT_LT((off - off.dot(dir) * dir).norm(), tolerance<M>(10.0)) << "edge vertex " << v;
+    }
+  }
+  EXPECT_EQ(corners, 8);
+  EXPECT_EQ(report.corner_vertices, 8);
+  EXPECT_EQ(report.edge_vertices, edges);
+  EXPECT_EQ(report.reverted_vertices, 0);
+  EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()));
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    const Primitive& side = *box.planes[static_cast<size_t>(box.soup.labels[f])];
+    EXPECT_GT(face_normal(m, f).normalized().dot(side.axis), 0.99) << "face " << f;
+    for (int j = 0; j < 3; ++j)
+      EXPECT_LT(std::abs(signed_distance_to_primitive(side, eig(m.face[f].cP(j)))), tolerance<M>(10.0));
+  }
+}
+
+// A cylinder with a flat cap and a rounded rim: the rim goes onto the plane/cylinder circle; without
+// sharp edges each rim vertex goes onto just one of the two surfaces.
+TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
+{
+  using M = TypeParam;
+  const double radius = 5, height = 6, bevel = 0.2;
+  const int around = 48, along = 12, cap_rings = 8;
+  Soup s = make_tube({0, 0, 0}, {0, 0, 1}, height, around, along, [&](double, double h) {
+    return h >= height ? radius - bevel : radius;
+  });
+  const int rim = along * around;
+  for (int j = 0; j < around; ++j)
+    s.points[static_cast<size_t>(rim + j)].z() -= bevel;
+  // The cap: concentric rings down to a centre vertex, faces pointing up, label 1.
+  std::vector<int> outer(static_cast<size_t>(around));
+  for (int j = 0; j < around; ++j)
+    outer[static_cast<size_t>(j)] = rim + j;
+  for (int i = 1; i <= cap_rings; ++i) {
+    std::vector<int> inner;
+    if (i == cap_rings) {
+      inner.assign(static_cast<size_t>(around), static_cast<int>(s.points.size()));
+      s.points.emplace_back(0, 0, height);
+    } else {
+      const double r = radius * (cap_rings - i) / cap_rings;
+      for (int j = 0; j < around; ++j) {
+        const double t = 2 * kPi * j / around;
+        inner.push_back(static_cast<int>(s.points.size()));
+        // Same angular frame as make_tube, so the rings line up with the rim.
+        const Eigen::Vector3d u1 = any_orthogonal(Eigen::Vector3d::UnitZ()), u2 = Eigen::Vector3d::UnitZ().cross(u1);
+        s.points.push_back(r * (std::cos(t) * u1 + std::sin(t) * u2) +
+                           Eigen::Vector3d(0, 0, height + 0.01 * std::sin(5 * t)));
+      }
+    }
+    for (int j = 0; j < around; ++j) {
+      const size_t a = static_cast<size_t>(j), b = static_cast<size_t>((j + 1) % around);
+      s.triangles.push_back({outer[a], outer[b], inner[b]});
+      s.labels.push_back(1);
+      if (i < cap_rings) {
+        s.triangles.push_back({outer[a], inner[b], inner[a]});
+        s.labels.push_back(1);
+      }
+    }
+    outer = inner;
+  }
+  const Primitive wall = cylinder({0, 0, 0}, {0, 0, 1}, radius);
+  const Primitive top = plane({0, 0, height}, {0, 0, 1});
+
+  M sharp;
+  build_mesh(sharp, s);
+  const SnapReport report = snap_segments(sharp, s.labels, {wall, top});
+  EXPECT_EQ(report.edge_vertices, around);
+  EXPECT_EQ(report.reverted_vertices, 0);
+  for (int j = 0; j < around; ++j) {
+    const Eigen::Vector3d x = eig(sharp.vert[static_cast<size_t>(rim + j)].cP());
+    EXPECT_LT(std::abs(signed_distance_to_primitive(wall, x)), tolerance<M>(radius));
+    EXPECT_LT(std::abs(signed_distance_to_primitive(top, x)), tolerance<M>(radius));
+  }
+  for (size_t f = 0; f < sharp.face.size(); ++f) {
+    const Eigen::Vector3d n = face_normal(sharp, f).normalized();
+    if (s.labels[f] == 1) {
+      EXPECT_GT(n.z(), 0.99);
+    } else {
+      EXPECT_LT(std::abs(n.z()), 0.1);
+    }
+  }
+
+  M soft;
+  build_mesh(soft, s);
+  SnapOptions options;
+  options.sharp_edges = false;
+  const SnapReport soft_report = snap_segments(soft, s.labels, {wall, top}, options);
+  EXPECT_EQ(soft_report.edge_vertices, 0);
+  int on_both = 0;
+  for (int j = 0; j < around; ++j) {
+    const Eigen::Vector3d x = eig(soft.vert[static_cast<size_t>(rim + j)].cP());
+    const bool on_wall = std::abs(signed_distance_to_primitive(wall, x)) < tolerance<M>(radius);
+    const bool on_top = std::abs(signed_distance_to_primitive(top, x)) < tolerance<M>(radius);
+    EXPECT_TRUE(on_wall || on_top);
+    on_both += (on_wall && on_top) ? 1 : 0;
+  }
+  EXPECT_EQ(on_both, 0);
+}
+
+// A triangle whose inner vertex would be projected across the opposite edge: snapping it would flip
+// the face, so it stays where it was.
+TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
+{
+  using M = TypeParam;
+  Soup s;
+  s.points = {{1, 0, 0}, {0, 1, 0}, {0.3, 0.3, -0.01}};
+  s.triangles = {{0, 1, 2}};
+  s.labels = {0};
+  Primitive ball;
+  ball.type = PrimitiveType::Sphere;
+  ball.radius = 1;
+
+  M unguarded;
+  build_mesh(unguarded, s);
+  const Eigen::Vector3d before = face_normal(unguarded, 0);
+  SnapOptions options;
+  options.prevent_flips = false;
+  snap_segments(unguarded, s.labels, {ball}, options);
+  ASSERT_LT(face_normal(unguarded, 0).dot(before), 0) << "the setup must flip without the guard";
+
+  M m;
+  build_mesh(m, s);
+  const Eigen::Vector3d inner = eig(m.vert[2].cP());
+  const SnapReport report = snap_segments(m, s.labels, {ball});
+  EXPECT_GT(face_normal(m, 0).dot(before), 0);
+  EXPECT_EQ(report.reverted_vertices, 1);
+  EXPECT_EQ(report.moved_vertices, 2);
+  EXPECT_EQ(eig(m.vert[2].cP()), inner);
+}
+
+// Vertices of unsnapped segments only are untouched; their boundary with a snapped segment is snapped.
+TYPED_TEST(SnapSegmentsTest, UnsnappedSegmentsUntouched)
+{
+  using M = TypeParam;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  Soup s = make_tube({0, 0, 0}, {0, 0, 1}, 8.0, 32, 16, [&](double, double) { return 4.8 + noise(rng); });
+  const int around = 32, along = 16;
+  for (size_t f = 0; f < s.triangles.size(); ++f)
+    s.labels[f] = static_cast<int>(f) / (2 * around) < along / 2 ? 0 : 1;
+  M m;
+  build_mesh(m, s);
+  std::vector<Eigen::Vector3d> before;
+  for (const auto& v : m.vert)
+    before.push_back(eig(v.cP()));
+  const Primitive cyl = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  const SnapReport report = snap_segments(m, s.labels, {cyl, std::nullopt});
+  EXPECT_EQ(report.moved_vertices, (along / 2 + 1) * around);
+  for (size_t v = 0; v < m.vert.size(); ++v) {
+    const int ring = static_cast<int>(v) / around;
+    if (ring > along / 2) {
+      EXPECT_EQ(eig(m.vert[v].cP()), before[v]);
+    } else {
+      EXPECT_LT(std::abs(signed_distance_to_primitive(cyl, eig(m.vert[v].cP()))), tolerance<M>(10.0));
+    }
+  }
+}
+
+// NaN primitives are not snapped to; a NaN vertex stays as it is and does not spoil its neighbours;
+// missing or out-of-range labels mean "no segment"; an empty mesh is fine.
+TYPED_TEST(SnapSegmentsTest, BadInputWritesNoNaN)
+{
+  using M = TypeParam;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Soup s = make_tube({0, 0, 0}, {0, 0, 1}, 8.0, 32, 8, [](double, double) { return 4.8; });
+
+  M m;
+  build_mesh(m, s);
+  std::vector<Eigen::Vector3d> before;
+  for (const auto& v : m.vert)
+    before.push_back(eig(v.cP()));
+  Primitive broken = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  broken.radius = nan;
+  SnapReport report = snap_segments(m, s.labels, {broken});
+  EXPECT_EQ(report.moved_vertices, 0);
+  for (size_t v = 0; v < m.vert.size(); ++v)
+    EXPECT_EQ(eig(m.vert[v].cP()), before[v]);
+
+  const Primitive cyl = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  m.vert[40].P()[0] = typename M::ScalarType(nan);
+  report = snap_segments(m, s.labels, {cyl});
+  EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()) - 1);
+  EXPECT_TRUE(std::isnan(double(m.vert[40].cP()[0])));
+  for (size_t v = 0; v < m.vert.size(); ++v) {
+    if (v != 40) {
+      EXPECT_LT(std::abs(signed_distance_to_primitive(cyl, eig(m.vert[v].cP()))), tolerance<M>(10.0));
+    }
+  }
+  EXPECT_TRUE(std::isfinite(report.mean_displacement));
+  EXPECT_TRUE(std::isfinite(report.max_displacement));
+
+  // Labels too short and out of range: only the labelled faces' vertices (ring 0 and 1) may move.
+  M partial;
+  build_mesh(partial, s);
+  std::vector<int> labels(static_cast<size_t>(2 * 32), 0);
+  labels[0] = 7;
+  report = snap_segments(partial, labels, {cyl});
+  EXPECT_EQ(report.moved_vertices, 2 * 32);
+
+  M empty;
+  report = snap_segments(empty, {}, {cyl});
+  EXPECT_EQ(report.moved_vertices, 0);
+  EXPECT_EQ(report.mean_displacement, 0.0);
+}
+
+// A 10 x 10 x 4 plate with a through hole of radius 2, chamfered and noisy: six planes and a cylinder.
+// The plate's 8 corners, its edges and both rims of the hole must come out sharp, with no face flipped.
+TYPED_TEST(SnapSegmentsTest, PlateWithHoleBecomesSharp)
+{
+  using M = TypeParam;
+  const double half = 5, thick = 4, hole = 2, chamfer = 0.15;
+  const int around = 64, rings = 8, levels = 8;  // around divisible by 8 puts vertices on the square's corners
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> noise(-0.02, 0.02);
+  auto jitter = [&]() { return Eigen::Vector3d(noise(rng), noise(rng), noise(rng)); };
+  auto angle = [&](double j) { return 2 * kPi * j / around; };
+  // Distance from the axis to the square's boundary along angle t.
+  auto square = [&](double t) { return half / std::max(std::abs(std::cos(t)), std::abs(std::sin(t))); };
+  auto ray = [&](int j) { return Eigen::Vector3d(std::cos(angle(j)), std::sin(angle(j)), 0); };
+
+  Soup s;
+  std::vector<int> kind;  // per vertex: 0 face, 1 hole rim, 2 outer rim, 3 vertical edge, 4 corner
+  auto add = [&](const Eigen::Vector3d& x, int k) {
+    s.points.push_back(x + jitter());
+    kind.push_back(k);
+    return static_cast<int>(s.points.size()) - 1;
+  };
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  std::vector<std::vector<int>> top(rings + 1), bottom(rings + 1), inner(levels + 1), outer(levels + 1);
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < around; ++j) {
+      const bool corner = j % (around / 4) == around / 8;
+      const double r = hole + (square(angle(j)) - hole) * i / rings;
+      // Chamfer the rims: towards the plate's inside, in from the outer wall or out from the hole.
+      const double slide = i == 0 ? chamfer : (i == rings ? -chamfer : 0);
+      const double drop = (i == 0 || i == rings) ? chamfer : 0;
+      const int k = i == 0 ? 1 : (i == rings ? (corner ? 4 : 2) : 0);
+      top[static_cast<size_t>(i)].push_back(add((r + slide) * ray(j) + (thick - drop) * up, k));
+      bottom[static_cast<size_t>(i)].push_back(add((r + slide) * ray(j) + drop * up, k));
+    }
+  inner[0] = bottom[0];
+  inner[levels] = top[0];
+  outer[0] = bottom[rings];
+  outer[levels] = top[rings];
+  for (int l = 1; l < levels; ++l)
+    for (int j = 0; j < around; ++j) {
+      const bool corner = j % (around / 4) == around / 8;
+      const double z = thick * l / levels;
+      inner[static_cast<size_t>(l)].push_back(add(hole * ray(j) + z * up, 0));
+      outer[static_cast<size_t>(l)].push_back(
+          add((square(angle(j)) - (corner ? chamfer : 0)) * ray(j) + z * up, corner ? 3 : 0));
+    }
+  // Quads between two rows of vertices; `flip` reverses the orientation.
+  auto strip = [&](const std::vector<int>& a, const std::vector<int>& b, bool flip, auto label_of) {
+    for (int j = 0; j < around; ++j) {
+      const size_t j0 = static_cast<size_t>(j), j1 = static_cast<size_t>((j + 1) % around);
+      const std::array<int, 3> t1{a[j0], b[j0], b[j1]}, t2{a[j0], b[j1], a[j1]};
+      s.triangles.push_back(flip ? std::array<int, 3>{t1[0], t1[2], t1[1]} : t1);
+      s.triangles.push_back(flip ? std::array<int, 3>{t2[0], t2[2], t2[1]} : t2);
+      s.labels.push_back(label_of(j));
+      s.labels.push_back(label_of(j));
+    }
+  };
+  // Sides of the square by the angle of a wall quad's middle: 3 (+x), 4 (+y), 5 (-x), 6 (-y).
+  auto side_of = [&](int j) { return 3 + static_cast<int>(std::floor((angle(j + 0.5) + kPi / 4) / (kPi / 2))) % 4; };
+  for (int i = 0; i < rings; ++i) {
+    strip(top[static_cast<size_t>(i)], top[static_cast<size_t>(i + 1)], false, [](int) { return 0; });
+    strip(bottom[static_cast<size_t>(i)], bottom[static_cast<size_t>(i + 1)], true, [](int) { return 1; });
+  }
+  for (int l = 0; l < levels; ++l) {
+    strip(inner[static_cast<size_t>(l)], inner[static_cast<size_t>(l + 1)], false, [](int) { return 2; });
+    strip(outer[static_cast<size_t>(l)], outer[static_cast<size_t>(l + 1)], true, side_of);
+  }
+  const std::vector<std::optional<Primitive>> primitives = {
+      plane(thick * up, up), plane({0, 0, 0}, -up), cylinder({0, 0, 0}, up, hole),
+      plane({half, 0, 0}, {1, 0, 0}), plane({0, half, 0}, {0, 1, 0}), plane({-half, 0, 0}, {-1, 0, 0}),
+      plane({0, -half, 0}, {0, -1, 0})};
+
+  M m;
+  build_mesh(m, s);
+  const SnapReport report = snap_segments(m, s.labels, primitives);
+  EXPECT_EQ(report.corner_vertices, 8);
+  EXPECT_EQ(report.reverted_vertices, 0);
+  // Every vertex lies on the primitive of each of its faces: on two at edges, three at corners.
+  std::vector<std::vector<int>> labels_of_vertex(m.vert.size());
+  for (size_t f = 0; f < s.triangles.size(); ++f)
+    for (int v : s.triangles[f])
+      labels_of_vertex[static_cast<size_t>(v)].push_back(s.labels[f]);
+  for (size_t v = 0; v < m.vert.size(); ++v)
+    for (int label : labels_of_vertex[v])
+      EXPECT_LT(std::abs(signed_distance_to_primitive(*primitives[static_cast<size_t>(label)], eig(m.vert[v].cP()))),
+                tolerance<M>(10.0))
+          << "vertex " << v << " of kind " << kind[v] << ", label " << label;
+  for (size_t v = 0; v < m.vert.size(); ++v)
+    if (kind[v] == 4) {
+      const Eigen::Vector3d x = eig(m.vert[v].cP());
+      EXPECT_NEAR(std::abs(x.x()), half, 1e-4);
+      EXPECT_NEAR(std::abs(x.y()), half, 1e-4);
+      EXPECT_TRUE(std::abs(x.z()) < 1e-4 || std::abs(x.z() - thick) < 1e-4);
+    }
+  // No face flipped: each faces its surface's outside (into the hole on the hole's wall).
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    const int label = s.labels[f];
+    const Eigen::Vector3d centre = (eig(m.face[f].cP(0)) + eig(m.face[f].cP(1)) + eig(m.face[f].cP(2))) / 3;
+    const Eigen::Vector3d expected = label == 2 ? Eigen::Vector3d(-centre.x(), -centre.y(), 0).normalized()
+                                                : primitives[static_cast<size_t>(label)]->axis;
+    EXPECT_GT(face_normal(m, f).normalized().dot(expected), 0.9) << "face " << f << " label " << label;
+  }
+}
