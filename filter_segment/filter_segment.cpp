@@ -9,6 +9,8 @@
 #include "common/segment_primitive_attribute.h"
 #include "common/split_segments_by_plane.h"
 
+#include <QElapsedTimer>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -205,12 +207,15 @@ bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& pa
 
   std::vector<int> before;
   const int segments_before = read_segment_ids(mm.cm, before) ? segment_count(before) : 0;
+  QElapsedTimer timer;
+  timer.start();
   std::vector<int> segment_of_face;
   const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, cb);
   storeSegments(mm, segment_of_face);
   Log("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
-      "%d smoothing steps, min size %d faces.",
-      mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces);
+      "%d smoothing steps, min size %d faces, in %lld ms.",
+      mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces,
+      timer.elapsed());
   return true;
 }
 
