@@ -61,8 +61,9 @@ QJsonObject json_parameters(const Primitive& p)
 
 void update_geometry(MeshModel& mm)
 {
-  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm.cm);
+  // PerVertexNormalizedPerFace recomputes face normals unnormalised: normalise them after it.
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(mm.cm);
+  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm.cm);
   vcg::tri::UpdateBounding<CMeshO>::Box(mm.cm);
 }
 

@@ -1,0 +1,89 @@
+// edit_primitive.h: the Primitive Edit tool (a MeshLab edit plugin): pick segments in the view, merge them,
+// split them by a line drawn on screen, fit a primitive, edit its parameters and snap the segments onto it,
+// with undo. The state logic is PrimitiveEditSession (primitive_edit_session.h); this class holds the GUI:
+// mouse and keys, drawing over the mesh, the dock panel, the log and MeshLab's render buffers.
+#ifndef PRIMITIVE_EDIT_EDIT_PRIMITIVE_H
+#define PRIMITIVE_EDIT_EDIT_PRIMITIVE_H
+
+#include "primitive_edit_session.h"
+
+#include <common/interfaces.h>
+
+#include <QPoint>
+
+#include <vector>
+
+class PrimitiveEditPanel;
+class QDockWidget;
+
+class EditPrimitivePlugin : public QObject, public MeshEditInterface
+{
+  Q_OBJECT
+  Q_INTERFACES(MeshEditInterface)
+
+public:
+  EditPrimitivePlugin();
+  ~EditPrimitivePlugin() override;
+
+  static QString Info();
+  void suggestedRenderingData(MeshModel& m, MLRenderingData& dt) override;
+  using MeshEditInterface::EndEdit;
+  // Sets the log before anything happens (MeshLab sets it only when drawing), then starts on the current mesh.
+  bool StartEdit(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  bool StartEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  void EndEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  // MeshLab also reports a layer change when the current layer stays the same (e.g. after a save): the
+  // session, with its undo steps, is kept then; a real change restarts the tool on the new layer.
+  void LayerChanged(MeshDocument& md, MeshModel& old_model, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  void Decorate(MeshModel& m, GLArea* gla) override;
+  void mousePressEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void mouseMoveEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void mouseReleaseEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void keyPressEvent(QKeyEvent* event, MeshModel& m, GLArea* gla) override;
+
+private:
+  void segment();
+  void merge();
+  void fit();
+  void parametersEdited();
+  void apply();
+  void undo();
+  void split(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+  void pickAt(const Eigen::Vector2d& at, bool additive);
+  // After a change: panel, cached drawings, MeshLab's buffers (colours, and positions and normals when
+  // the geometry moved) and a redraw.
+  void refresh(bool geometry_moved);
+  void report(bool ok, const QString& what, const std::string& message);
+  QString pickedText() const;
+  void drawOverlay();
+
+  primitive_edit::PrimitiveEditSession<CMeshO> session_;
+  // Whether the mesh had face quality before the tool enabled it: a quality the tool just switched on is
+  // all zero and no segmentation.
+  bool had_face_quality_ = false;
+  MeshModel* model_ = nullptr;
+  GLArea* gla_ = nullptr;
+  MLSceneGLSharedDataContext* context_ = nullptr;
+  QDockWidget* dock_ = nullptr;
+  PrimitiveEditPanel* panel_ = nullptr;
+
+  // Mouse: a press starts a pick (released without moving) or, with Ctrl, a split line.
+  bool pressed_ = false;
+  bool drawing_line_ = false;
+  QPoint press_pos_;
+  Eigen::Vector2d line_start_ = Eigen::Vector2d::Zero(), line_end_ = Eigen::Vector2d::Zero();
+  // A click waiting for the next frame, where the GL matrices needed to pick are set.
+  bool pick_pending_ = false;
+  bool pick_additive_ = false;
+  Eigen::Vector2d pick_at_ = Eigen::Vector2d::Zero();
+
+  // The camera of the last frame, in the mesh's own coordinates (the layer transform included).
+  bool have_camera_ = false;
+  Eigen::Matrix4d modelview_ = Eigen::Matrix4d::Identity(), projection_ = Eigen::Matrix4d::Identity();
+  Eigen::Vector4d viewport_ = Eigen::Vector4d::Zero();
+
+  std::vector<float> highlight_;  // triangles of the picked segments, 9 floats each
+  Eigen::MatrixX3d wireframe_;    // line ends of the edited primitive
+};
+
+#endif

@@ -1,0 +1,74 @@
+// primitive_edit_panel.h: the Primitive Edit tool's dock panel, plain Qt widgets: automatic segmentation
+// (angle + Segment), the picked segments with Merge, the primitive type with Fit, the fitted parameters as
+// editable fields with the RMS residual, Apply and Undo. It only shows values and emits requests; the edit
+// plugin does the work.
+#ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
+#define PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
+
+#include "common/primitive.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+class PrimitiveEditPanel : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit PrimitiveEditPanel(QWidget* parent = nullptr);
+
+  double angle() const;
+  // The chosen type; std::nullopt for Auto.
+  std::optional<primitive_edit::PrimitiveType> type() const;
+  void setType(std::optional<primitive_edit::PrimitiveType> type);
+
+  void setSegmentInfo(int segment_count, const QString& picked);
+  // Shows a fitted (or edited) primitive in the fields, or clears them.
+  void showPrimitive(const std::optional<primitive_edit::Primitive>& primitive, double rms);
+  // The shown primitive with the values of the fields.
+  primitive_edit::Primitive editedPrimitive() const;
+  void setCanUndo(bool can_undo, const QString& what);
+  void setStatus(const QString& text);
+  // Puts the keyboard focus in the first size field of the shown type (radius, half-angle, ...).
+  void focusSizeField();
+
+signals:
+  void segmentRequested();
+  void mergeRequested();
+  void fitRequested();
+  void parametersEdited();
+  void applyRequested();
+  void undoRequested();
+  // Return was pressed in a field: the keyboard goes back to the view.
+  void viewFocusRequested();
+
+private:
+  QDoubleSpinBox* addField(const QString& label, double min, double max, int decimals);
+  void fieldEdited(QDoubleSpinBox* field);
+  void updateFieldVisibility();
+
+  QDoubleSpinBox* angle_ = nullptr;
+  QLabel* segments_ = nullptr;
+  QLabel* picked_ = nullptr;
+  QComboBox* type_ = nullptr;
+  QDoubleSpinBox* radius_ = nullptr;
+  QDoubleSpinBox* minor_ = nullptr;
+  QDoubleSpinBox* half_angle_ = nullptr;
+  QDoubleSpinBox* axis_[3] = {nullptr, nullptr, nullptr};
+  QDoubleSpinBox* origin_[3] = {nullptr, nullptr, nullptr};
+  QLabel* rms_ = nullptr;
+  QPushButton* apply_ = nullptr;
+  QPushButton* undo_ = nullptr;
+  QLabel* status_ = nullptr;
+  class QFormLayout* fields_ = nullptr;
+  std::optional<primitive_edit::Primitive> shown_;
+  bool filling_ = false;
+};
+
+#endif

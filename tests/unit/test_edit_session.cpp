@@ -1,0 +1,338 @@
+// Tests of the Primitive Edit tool's state logic (edit_primitive/primitive_edit_session.h) without a window,
+// on the tests' mesh type and on MeshLab's CMeshO: pick, merge, split by a screen line with a given camera,
+// fit, edit, apply with sharp edges, undo several steps, and bad input.
+#include "edit_primitive/primitive_edit_session.h"
+
+#include "test_mesh.h"
+
+#include <common/ml_mesh_type.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace {
+
+using namespace primitive_edit;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kAround = 32, kRings = 8;
+constexpr double kRadius = 2.0, kHeight = 4.0;
+constexpr int kSideFaces = 2 * kAround * kRings;
+
+// A closed cylinder around the z axis, z in [0, kHeight]: side faces first, then the bottom and top fans.
+template <class M>
+void make_closed_cylinder(M& m)
+{
+  m.Clear();
+  auto vi = vcg::tri::Allocator<M>::AddVertices(m, (kRings + 1) * kAround + 2);
+  for (int i = 0; i <= kRings; ++i)
+    for (int j = 0; j < kAround; ++j, ++vi) {
+      const double t = 2 * kPi * j / kAround;
+      vi->P() = typename M::CoordType(kRadius * std::cos(t), kRadius * std::sin(t), kHeight * i / kRings);
+    }
+  const int bottom = (kRings + 1) * kAround, top = bottom + 1;
+  m.vert[bottom].P() = typename M::CoordType(0, 0, 0);
+  m.vert[top].P() = typename M::CoordType(0, 0, kHeight);
+  auto v = [&](int i, int j) { return &m.vert[std::size_t(i * kAround + (j % kAround))]; };
+  for (int i = 0; i < kRings; ++i)
+    for (int j = 0; j < kAround; ++j) {
+      vcg::tri::Allocator<M>::AddFace(m, v(i, j), v(i, j + 1), v(i + 1, j + 1));
+      vcg::tri::Allocator<M>::AddFace(m, v(i, j), v(i + 1, j + 1), v(i + 1, j));
+    }
+  for (int j = 0; j < kAround; ++j)
+    vcg::tri::Allocator<M>::AddFace(m, &m.vert[bottom], v(0, j + 1), v(0, j));
+  for (int j = 0; j < kAround; ++j)
+    vcg::tri::Allocator<M>::AddFace(m, &m.vert[top], v(kRings, j), v(kRings, j + 1));
+  vcg::tri::UpdateNormal<M>::PerFaceNormalized(m);
+  vcg::tri::UpdateNormal<M>::PerVertexNormalizedPerFace(m);
+  vcg::tri::UpdateBounding<M>::Box(m);
+}
+
+constexpr int kFirstBottomFace = kSideFaces, kFirstTopFace = kSideFaces + kAround;
+
+template <class M>
+Eigen::Vector3d centroid(const M& m, int f)
+{
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    c += Eigen::Vector3d(m.face[std::size_t(f)].cP(k)[0], m.face[std::size_t(f)].cP(k)[1],
+                         m.face[std::size_t(f)].cP(k)[2]);
+  return c / 3.0;
+}
+
+// A camera at z = 20 looking down -z, 60 degree perspective, 800 x 800 viewport.
+struct Camera
+{
+  Eigen::Matrix4d modelview = Eigen::Matrix4d::Identity();
+  Eigen::Matrix4d projection = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d viewport{0, 0, 800, 800};
+  Camera()
+  {
+    modelview(2, 3) = -20;
+    const double f = 1 / std::tan(kPi / 6), n = 1, far = 100;
+    projection(0, 0) = f;
+    projection(1, 1) = f;
+    projection(2, 2) = (far + n) / (n - far);
+    projection(2, 3) = 2 * far * n / (n - far);
+    projection(3, 2) = -1;
+  }
+  // Window y of an object point.
+  double window_y(const Eigen::Vector3d& p) const
+  {
+    const Eigen::Vector4d c = projection * modelview * p.homogeneous();
+    return viewport[1] + viewport[3] * (c.y() / c.w() + 1) / 2;
+  }
+};
+
+template <class M>
+class EditSessionTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    make_closed_cylinder(mesh);
+    ASSERT_TRUE(session.attach(mesh).ok);
+    SegmentByNormalAngleParams params;
+    params.angle_deg = 30;
+    ASSERT_TRUE(session.auto_segment(params).ok);
+  }
+  int side() const { return session.segment_of(0); }
+  int bottom() const { return session.segment_of(kFirstBottomFace); }
+  int top() const { return session.segment_of(kFirstTopFace); }
+
+  M mesh;
+  PrimitiveEditSession<M> session;
+};
+
+using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+TYPED_TEST_SUITE(EditSessionTest, MeshTypes);
+
+TYPED_TEST(EditSessionTest, AutoSegmentationFindsSideAndCaps)
+{
+  EXPECT_EQ(this->session.segment_count(), 3);
+  std::set<int> ids{this->side(), this->bottom(), this->top()};
+  EXPECT_EQ(ids.size(), 3u);
+  for (int f = 0; f < kSideFaces; ++f)
+    ASSERT_EQ(this->session.segment_of(f), this->side());
+  // The ids are on the mesh too, where the batch filters read them.
+  std::vector<int> stored;
+  ASSERT_TRUE(read_segment_ids(this->mesh, stored));
+  EXPECT_EQ(stored, this->session.segment_of_face());
+}
+
+TYPED_TEST(EditSessionTest, PickAddsRemovesAndClears)
+{
+  auto& s = this->session;
+  EXPECT_TRUE(s.pick(5, false));
+  EXPECT_EQ(s.picked(), std::vector<int>{this->side()});
+  EXPECT_TRUE(s.pick(kFirstTopFace, true));
+  EXPECT_EQ(s.picked(), (std::vector<int>{this->side(), this->top()}));
+  EXPECT_TRUE(s.pick(kFirstTopFace + 3, true)); // same segment again: removed
+  EXPECT_EQ(s.picked(), std::vector<int>{this->side()});
+  EXPECT_EQ(int(s.picked_faces().size()), kSideFaces);
+  EXPECT_FALSE(s.pick(-1, true)); // Shift+click in empty space keeps the picks
+  EXPECT_EQ(s.picked().size(), 1u);
+  EXPECT_FALSE(s.pick(1 << 30, false)); // out of range: like empty space, clears
+  EXPECT_TRUE(s.picked().empty());
+}
+
+TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
+{
+  auto& s = this->session;
+  auto& m = this->mesh;
+  const Camera camera;
+  const std::vector<typename TypeParam::CoordType> original = [&] {
+    std::vector<typename TypeParam::CoordType> p;
+    for (const auto& v : m.vert)
+      p.push_back(v.cP());
+    return p;
+  }();
+
+  // Split the side by a horizontal screen line at window y = 430 (above the axis, which is at y = 400).
+  ASSERT_TRUE(s.pick(0, false));
+  const EditOutcome split = s.split_picked_by_screen_line({50, 430}, {750, 430}, camera.modelview,
+                                                          camera.projection, camera.viewport);
+  ASSERT_TRUE(split.ok) << split.message;
+  EXPECT_EQ(s.segment_count(), 4);
+  EXPECT_TRUE(s.picked().empty());
+  // Every side face lands on the side of the line its centroid projects to; the caps stay whole.
+  int above = -1, below = -1;
+  for (int f = 0; f < kSideFaces; ++f) {
+    const bool is_above = camera.window_y(centroid(m, f)) >= 430;
+    int& id = is_above ? above : below;
+    if (id < 0)
+      id = s.segment_of(f);
+    ASSERT_EQ(s.segment_of(f), id) << "face " << f;
+  }
+  EXPECT_NE(above, below);
+  EXPECT_EQ(s.segment_of(kFirstTopFace), s.segment_of(kFirstTopFace + kAround - 1));
+
+  // A line that misses the picked segment cuts nothing and adds no undo step.
+  ASSERT_TRUE(s.pick(kFirstTopFace, false));
+  const std::size_t depth = s.undo_depth();
+  EXPECT_FALSE(s.split_picked_by_screen_line({0, 5}, {10, 5}, camera.modelview, camera.projection,
+                                             camera.viewport).ok);
+  EXPECT_EQ(s.undo_depth(), depth);
+
+  // Merge the two halves back (the second picked with Shift).
+  int face_above = -1, face_below = -1;
+  for (int f = 0; f < kSideFaces; ++f)
+    (s.segment_of(f) == above ? face_above : face_below) = f;
+  ASSERT_TRUE(s.pick(face_above, false));
+  ASSERT_TRUE(s.pick(face_below, true));
+  const EditOutcome merged = s.merge_picked();
+  ASSERT_TRUE(merged.ok) << merged.message;
+  EXPECT_EQ(s.segment_count(), 3);
+  EXPECT_EQ(s.picked(), std::vector<int>{s.segment_of(0)});
+  for (int f = 0; f < kSideFaces; ++f)
+    ASSERT_EQ(s.segment_of(f), s.segment_of(0));
+
+  // Fit a cylinder, change its radius, apply.
+  const FitResult fit = s.fit(PrimitiveType::Cylinder);
+  ASSERT_TRUE(fit.ok) << fit.message;
+  EXPECT_NEAR(fit.primitive.radius, kRadius, 1e-3);
+  EXPECT_NEAR(std::abs(fit.primitive.axis.z()), 1.0, 1e-4);
+  Primitive edited = *s.edited();
+  edited.radius = 2.5;
+  ASSERT_TRUE(s.set_edited(edited).ok);
+  auto radius_of_side = [&](double& lo, double& hi) {
+    lo = 1e9;
+    hi = 0;
+    for (int f = 0; f < kSideFaces; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const auto& p = m.face[std::size_t(f)].cP(k);
+        const double r = std::hypot(double(p[0]), double(p[1]));
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+      }
+  };
+  ApplyOutcome applied = s.apply();
+  ASSERT_TRUE(applied.ok) << applied.message;
+  EXPECT_GT(applied.report.moved_vertices, 0);
+  double lo, hi;
+  radius_of_side(lo, hi);
+  EXPECT_NEAR(lo, 2.5, 1e-4);
+  EXPECT_NEAR(hi, 2.5, 1e-4);
+  // Normals follow the moved vertices.
+  EXPECT_NEAR(double(m.face[0].cN().Norm()), 1.0, 1e-5);
+  SegmentPrimitives recorded = read_segment_primitives(m, s.segment_count());
+  ASSERT_TRUE(recorded[std::size_t(s.segment_of(0))].has_value());
+  EXPECT_DOUBLE_EQ(recorded[std::size_t(s.segment_of(0))]->radius, 2.5);
+
+  // Undo the apply: every vertex back, the record gone, the edited cylinder kept to apply again.
+  ASSERT_TRUE(s.undo());
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    ASSERT_EQ(m.vert[v].cP(), original[v]) << "vertex " << v;
+  EXPECT_FALSE(read_segment_primitives(m, s.segment_count())[std::size_t(s.segment_of(0))].has_value());
+  ASSERT_TRUE(s.edited().has_value());
+  EXPECT_DOUBLE_EQ(s.edited()->radius, 2.5);
+  applied = s.apply();
+  ASSERT_TRUE(applied.ok) << applied.message;
+  radius_of_side(lo, hi);
+  EXPECT_NEAR(lo, 2.5, 1e-4);
+  ASSERT_TRUE(s.undo());
+
+  // Several steps back: merge, then split, then the automatic segmentation.
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.segment_count(), 4);
+  EXPECT_NE(s.segment_of(face_above), s.segment_of(face_below));
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.segment_count(), 3);
+  ASSERT_TRUE(s.undo());
+  EXPECT_FALSE(s.has_segments());
+  EXPECT_FALSE(s.can_undo());
+  EXPECT_FALSE(s.undo());
+}
+
+TYPED_TEST(EditSessionTest, ApplyMakesSharpEdgesAgainstSnappedNeighbours)
+{
+  auto& s = this->session;
+  auto& m = this->mesh;
+  ASSERT_TRUE(s.pick(0, false));
+  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).ok);
+  Primitive cylinder = *s.edited();
+  cylinder.radius = 2.5;
+  ASSERT_TRUE(s.set_edited(cylinder).ok);
+  ASSERT_TRUE(s.apply().ok);
+
+  // The top cap, raised to z = 4.2: its rim must land on the circle where plane and cylinder meet.
+  ASSERT_TRUE(s.pick(kFirstTopFace, false));
+  const FitResult plane_fit = s.fit(std::nullopt);
+  ASSERT_TRUE(plane_fit.ok) << plane_fit.message;
+  ASSERT_EQ(plane_fit.primitive.type, PrimitiveType::Plane);
+  Primitive plane = *s.edited();
+  plane.origin = Eigen::Vector3d(0, 0, 4.2);
+  ASSERT_TRUE(s.set_edited(plane).ok);
+  const ApplyOutcome applied = s.apply();
+  ASSERT_TRUE(applied.ok) << applied.message;
+  EXPECT_GE(applied.report.edge_vertices, kAround);
+  for (int j = 0; j < kAround; ++j) {
+    const auto& p = m.vert[std::size_t(kRings * kAround + j)].cP();
+    EXPECT_NEAR(double(p[2]), 4.2, 1e-4);
+    EXPECT_NEAR(std::hypot(double(p[0]), double(p[1])), 2.5, 1e-4);
+  }
+
+  // Merging the two caps keeps the side's record (under its id after the merge) and drops the caps'.
+  ASSERT_TRUE(s.pick(kFirstTopFace, false));
+  ASSERT_TRUE(s.pick(kFirstBottomFace, true));
+  ASSERT_TRUE(s.merge_picked().ok);
+  const SegmentPrimitives recorded = read_segment_primitives(m, s.segment_count());
+  ASSERT_TRUE(recorded[std::size_t(s.segment_of(0))].has_value());
+  EXPECT_EQ(recorded[std::size_t(s.segment_of(0))]->type, PrimitiveType::Cylinder);
+  EXPECT_FALSE(recorded[std::size_t(s.segment_of(kFirstTopFace))].has_value());
+}
+
+TYPED_TEST(EditSessionTest, RefusesWhatCannotBeDone)
+{
+  auto& s = this->session;
+  EXPECT_FALSE(s.merge_picked().ok);                       // nothing picked
+  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 1}).ok);
+  EXPECT_FALSE(s.apply().ok);                              // nothing fitted
+  EXPECT_FALSE(s.fit(PrimitiveType::Plane).ok);            // nothing picked
+  ASSERT_TRUE(s.pick(0, false));
+  EXPECT_FALSE(s.merge_picked().ok);                       // one segment only
+  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 0}).ok);
+  EXPECT_FALSE(s.split_picked_by_plane({NAN, 0, 1}, {0, 0, 1}).ok);
+  EXPECT_FALSE(s.set_edited(Primitive()).ok);              // no fit yet
+  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).ok);
+  Primitive bad = *s.edited();
+  bad.radius = -1;
+  EXPECT_FALSE(s.set_edited(bad).ok);
+  bad.type = PrimitiveType::Sphere;
+  bad.radius = 1;
+  EXPECT_FALSE(s.set_edited(bad).ok);                      // another type needs another fit
+  EXPECT_EQ(s.edited()->type, PrimitiveType::Cylinder);
+  const Camera camera;
+  EXPECT_FALSE(s.split_picked_by_screen_line({5, 5}, {5, 5}, camera.modelview, camera.projection,
+                                             camera.viewport).ok);
+
+  // The mesh changed behind the session's back: refuse, do not crash.
+  vcg::tri::Allocator<TypeParam>::AddFace(this->mesh, &this->mesh.vert[0], &this->mesh.vert[1],
+                                         &this->mesh.vert[2]);
+  EXPECT_FALSE(s.merge_picked().ok);
+  EXPECT_FALSE(s.apply().ok);
+  EXPECT_FALSE(s.undo());
+  s.detach();
+  EXPECT_FALSE(s.attached());
+  EXPECT_FALSE(s.pick(0, false));
+}
+
+TYPED_TEST(EditSessionTest, AttachRefusesEmptyMeshesAndPointClouds)
+{
+  TypeParam empty;
+  PrimitiveEditSession<TypeParam> s;
+  EXPECT_FALSE(s.attach(empty).ok);
+  EXPECT_FALSE(s.attached());
+  TypeParam cloud;
+  vcg::tri::Allocator<TypeParam>::AddVertices(cloud, 10);
+  const EditOutcome outcome = s.attach(cloud);
+  EXPECT_FALSE(outcome.ok);
+  EXPECT_NE(outcome.message.find("point cloud"), std::string::npos);
+  EXPECT_FALSE(s.pick(0, false));
+  EXPECT_FALSE(s.auto_segment(SegmentByNormalAngleParams()).ok);
+}
+
+} // namespace
