@@ -1,0 +1,52 @@
+// check_fit_input.h: validation of the arrays given to a primitive fit.
+//
+// Input:  points N x 3, normals (N x 3 or empty), weights (N or empty = all 1), the minimum number
+//         of points the fit needs.
+// Output: true when the input is usable; otherwise false and *message says why. Non-finite
+//         coordinates, normals or weights are rejected (not dropped): a mesh with NaN vertices is
+//         broken and silently ignoring part of it would hide that. Negative weights, mismatched
+//         sizes and fewer than min_points points of positive weight are rejected too.
+// Cost:   O(N).
+#ifndef PRIMITIVE_EDIT_CHECK_FIT_INPUT_H
+#define PRIMITIVE_EDIT_CHECK_FIT_INPUT_H
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace primitive_edit {
+
+inline bool check_fit_input(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                            const Eigen::VectorXd& weights, int min_points, std::string* message)
+{
+  const Eigen::Index n = points.rows();
+  auto fail = [&](const std::string& m) {
+    if (message)
+      *message = m;
+    return false;
+  };
+  if (normals.rows() != 0 && normals.rows() != n)
+    return fail("normals must have as many rows as points (or none)");
+  if (weights.size() != 0 && weights.size() != n)
+    return fail("weights must have as many entries as points (or none)");
+  if (!points.allFinite())
+    return fail("points contain non-finite coordinates");
+  if (normals.rows() != 0 && !normals.allFinite())
+    return fail("normals contain non-finite values");
+  Eigen::Index used = n;
+  if (weights.size() != 0) {
+    if (!weights.allFinite())
+      return fail("weights contain non-finite values");
+    if ((weights.array() < 0).any())
+      return fail("weights must be non-negative");
+    used = (weights.array() > 0).count();
+  }
+  if (used < min_points)
+    return fail("too few points: " + std::to_string(used) + " with positive weight, need at least " +
+                std::to_string(min_points));
+  return true;
+}
+
+} // namespace primitive_edit
+
+#endif

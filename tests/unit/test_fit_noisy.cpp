@@ -1,0 +1,160 @@
+// Noisy data (Gaussian, sigma = 1% of the size, fixed seeds, normals tilted ~5 degrees): radius
+// within 1%, the right type from fit_primitive_auto; 10% far outliers: radius within 1% when robust.
+#include "common/fit_primitive_auto.h"
+#include "test_fit_data.h"
+
+#include <gtest/gtest.h>
+
+using namespace primitive_edit;
+using namespace test_fit;
+
+namespace {
+
+struct Case
+{
+  const char* name;
+  Primitive truth;
+  Patch patch;
+  double size;  // the radius whose error is checked (plane: none)
+};
+
+std::vector<Case> cases()
+{
+  Patch plane;
+  plane.extent = 2;
+  Patch cap;
+  cap.cap = M_PI / 3;
+  Patch arc;
+  arc.sweep = M_PI / 2;  // a 90-degree arc: where algebraic fits are biased
+  arc.extent = 4;
+  Patch frustum;
+  frustum.near = 2;
+  frustum.far = 4;
+  frustum.sweep = M_PI;
+  Patch quarter;
+  quarter.sweep = M_PI / 2;
+  return {
+      {"Plane", make_plane({0, 1, 2}, {0.1, 0.2, 1}), plane, 2},
+      {"Sphere", make_sphere({1, -1, 0}, 2), cap, 2},
+      {"Cylinder", make_cylinder({0, 0, 1}, {1, 0.2, 0.1}, 2), arc, 2},
+      {"Cone", make_cone({0.5, 0, 0}, {0, 1, 0.2}, 0.45), frustum, 1.5},
+      {"Torus", make_torus({0, 0, 0}, {0.2, 0, 1}, 3, 1), quarter, 1},
+  };
+}
+
+double size_parameter(const Primitive& p)
+{
+  switch (p.type) {
+  case PrimitiveType::Sphere:
+  case PrimitiveType::Cylinder: return p.radius;
+  case PrimitiveType::Cone: return std::tan(p.half_angle);  // radius per unit height
+  case PrimitiveType::Torus: return p.minor_radius;
+  case PrimitiveType::Plane: return 0;
+  }
+  return 0;
+}
+
+void expect_radius_within_1_percent(const Case& c, const FitResult& r)
+{
+  ASSERT_TRUE(r.ok) << c.name << ": " << r.message;
+  ASSERT_TRUE(primitive_is_valid(r.primitive));
+  EXPECT_EQ(r.primitive.type, c.truth.type);
+  if (c.truth.type == PrimitiveType::Plane) {
+    EXPECT_GT(std::abs(r.primitive.axis.dot(c.truth.axis)), std::cos(0.01)) << c.name;
+    return;
+  }
+  const double want = size_parameter(c.truth), got = size_parameter(r.primitive);
+  EXPECT_LT(std::abs(got - want), 0.01 * want) << c.name << ": " << got << " vs " << want;
+  if (c.truth.type == PrimitiveType::Torus) {
+    EXPECT_LT(std::abs(r.primitive.radius - c.truth.radius), 0.01 * c.truth.radius) << c.name;
+  }
+}
+
+TEST(FitNoisy, EachTypeRadiusWithinOnePercentAndAutoChoosesIt)
+{
+  unsigned seed = 10;
+  for (const Case& c : cases()) {
+    Sample s = sample_primitive(c.truth, c.patch, 3000, seed++);
+    add_noise(&s, 0.01 * c.size, 5.0, seed++);
+    for (bool with_normals : {true, false}) {
+      const Eigen::MatrixX3d normals = with_normals ? s.normals : Eigen::MatrixX3d();
+      SCOPED_TRACE(std::string(c.name) + (with_normals ? " with normals" : " points only"));
+      expect_radius_within_1_percent(c, fit_primitive(c.truth.type, s.points, normals, Eigen::VectorXd()));
+      const AutoFitResult a = fit_primitive_auto(s.points, normals, Eigen::VectorXd());
+      ASSERT_TRUE(a.ok) << a.message;
+      ASSERT_EQ(a.candidates.size(), 5u);
+      for (int t = 0; t < kPrimitiveTypeCount; ++t)
+        if (a.candidates[static_cast<size_t>(t)].ok) {
+          EXPECT_EQ(a.candidates[static_cast<size_t>(t)].primitive.type, static_cast<PrimitiveType>(t));
+        }
+      EXPECT_EQ(a.best.primitive.type, c.truth.type)
+          << "chose " << primitive_type_name(a.best.primitive.type) << " rms " << a.best.rms;
+      expect_radius_within_1_percent(c, a.best);
+    }
+  }
+}
+
+TEST(FitNoisy, TenPercentFarOutliersRejectedWhenRobust)
+{
+  unsigned seed = 40;
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    Sample s = sample_primitive(c.truth, c.patch, 3000, seed++);
+    add_noise(&s, 0.01 * c.size, 5.0, seed++);
+    add_outliers(&s, 0.1, 0.5 * c.size, 2.0 * c.size, seed++);
+    const FitResult r = fit_primitive(c.truth.type, s.points, s.normals, Eigen::VectorXd());
+    expect_radius_within_1_percent(c, r);
+    // Every point moved farther than 0.2 size from the true surface is rejected; most others are kept.
+    int far = 0;
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i)
+      far += std::abs(signed_distance_to_primitive(c.truth, s.points.row(i).transpose())) > 0.2 * c.size;
+    EXPECT_GT(far, 200);
+    EXPECT_LE(r.point_count, 3000 - far);
+    EXPECT_GE(r.point_count, 2600);
+    EXPECT_LT(r.max_residual, 0.2 * c.size);
+  }
+}
+
+TEST(FitNoisy, OutliersBiasTheNonRobustFit)
+{
+  const Case c = cases()[1];  // sphere cap
+  Sample s = sample_primitive(c.truth, c.patch, 3000, 70);
+  add_outliers(&s, 0.1, 0.5 * c.size, 2.0 * c.size, 71);
+  FitOptions plain;
+  plain.robust = false;
+  const FitResult r = fit_primitive(c.truth.type, s.points, s.normals, Eigen::VectorXd(), plain);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(r.point_count, 3000);
+  EXPECT_GT(r.max_residual, 0.3 * c.size);
+  const FitResult robust = fit_primitive(c.truth.type, s.points, s.normals, Eigen::VectorXd());
+  ASSERT_TRUE(robust.ok);
+  EXPECT_LT(robust.rms, 1e-6 * c.size);
+}
+
+TEST(FitNoisy, RandomBlobIsFreeForm)
+{
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> U(-1, 1);
+  Eigen::MatrixX3d pts(2000, 3);
+  for (Eigen::Index i = 0; i < pts.rows(); ++i)
+    pts.row(i) << U(rng), U(rng), U(rng);
+  const AutoFitResult a = fit_primitive_auto(pts, Eigen::MatrixX3d(), Eigen::VectorXd());
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.message.find("free-form"), std::string::npos) << a.message;
+  EXPECT_EQ(a.candidates.size(), 5u);
+}
+
+TEST(FitNoisy, LargeInputIsScreenedOnASubsampleAndRefinedOnAllPoints)
+{
+  const Case c = cases()[2];  // cylinder arc
+  Sample s = sample_primitive(c.truth, c.patch, 50000, 80);
+  add_noise(&s, 0.01 * c.size, 5.0, 81);
+  const AutoFitResult a = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
+  ASSERT_TRUE(a.ok) << a.message;
+  EXPECT_EQ(a.best.primitive.type, PrimitiveType::Cylinder);
+  EXPECT_GT(a.best.point_count, 49000);
+  EXPECT_EQ(a.candidates[2].point_count, a.best.point_count);
+  EXPECT_LT(std::abs(a.best.primitive.radius - 2), 0.002 * 2);
+}
+
+} // namespace
