@@ -1,0 +1,206 @@
+#include "filter_measure_accuracy.h"
+
+#include "common/measure_accuracy.h"
+#include "common/mesh_input_problem.h"
+#include "common/sample_surface_uniform.h"
+
+#include <vcg/complex/algorithms/update/color.h>
+
+#include <cmath>
+
+using namespace primitive_edit;
+
+namespace {
+
+constexpr int kMaxSamples = 100000000;  // 2.4 GB of sample coordinates; beyond that is a typo
+
+// MeshLab keeps a per-layer placement matrix apart from the vertex coordinates.
+Eigen::Affine3d layer_to_world(const CMeshO& m)
+{
+  Eigen::Affine3d a;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      a.matrix()(i, j) = double(m.Tr.ElementAt(i, j));
+  return a;
+}
+
+// A progress callback that maps a sub-task's 0-100 onto [from, to] of the filter's bar. vcg::CallBackPos
+// is a plain function pointer, so the range lives in statics (MeshLab runs one filter at a time).
+struct ProgressRange
+{
+  static vcg::CallBackPos* outer;
+  static int from, to;
+  static bool call(const int pos, const char* str)
+  {
+    return outer == nullptr || outer(from + (to - from) * pos / 100, str);
+  }
+};
+vcg::CallBackPos* ProgressRange::outer = nullptr;
+int ProgressRange::from = 0;
+int ProgressRange::to = 100;
+
+vcg::CallBackPos* progress_range(vcg::CallBackPos* cb, int from, int to)
+{
+  ProgressRange::outer = cb;
+  ProgressRange::from = from;
+  ProgressRange::to = to;
+  return &ProgressRange::call;
+}
+
+} // namespace
+
+FilterMeasureAccuracyPlugin::FilterMeasureAccuracyPlugin()
+{
+  typeList << MEASURE_ACCURACY;
+  for (FilterIDType tt : types())
+    actionList << new QAction(filterName(tt), this);
+}
+
+QString FilterMeasureAccuracyPlugin::pluginName() const { return "FilterMeasureAccuracy"; }
+
+QString FilterMeasureAccuracyPlugin::filterName(FilterIDType filter) const
+{
+  return filter == MEASURE_ACCURACY ? "Measure: Accuracy Against Reference" : "";
+}
+
+QString FilterMeasureAccuracyPlugin::filterInfo(FilterIDType filter) const
+{
+  if (filter != MEASURE_ACCURACY)
+    return "";
+  return "Measures how close a mesh is to a reference (CAD) mesh, as in section 3 of Yang, Oh, Choi, "
+         "<i>Mesh Editing with an Intuitive User Interface</i>: samples are spread uniformly by area over "
+         "the measured mesh, the shortest distance of each to the reference surface is found, and the "
+         "accuracy is the share of samples within the tolerance (the error permission). The log gives that "
+         "share, the mean, RMS and max distance and a histogram. Optionally writes the distance of each "
+         "vertex to the reference into the vertex quality of the measured mesh and colours it as a "
+         "deviation map (blue on the reference, green at the tolerance, red from twice the tolerance). "
+         "Both layers' transformation matrices are taken into account. The meshes must be roughly "
+         "aligned: far samples are slow to measure.";
+}
+
+int FilterMeasureAccuracyPlugin::postCondition(QAction*) const
+{
+  return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+}
+
+void FilterMeasureAccuracyPlugin::initParameterSet(QAction*, MeshDocument& md, RichParameterList& parlst)
+{
+  MeshModel* reference = md.mm();
+  for (MeshModel* m : md.meshList)
+    if (m != md.mm()) {
+      reference = m;
+      break;
+    }
+  parlst.addParam(RichMesh("MeasuredMesh", md.mm(), &md, "Measured Mesh",
+                           "The mesh whose accuracy is measured (e.g. the scan, or the edited scan). "
+                           "The samples are taken on its surface."));
+  parlst.addParam(RichMesh("ReferenceMesh", reference, &md, "Reference Mesh",
+                           "The reference surface (e.g. the CAD model) the samples' distances are measured to. "
+                           "Must be a different layer with faces."));
+  parlst.addParam(RichInt("Samples", 1000000, "Samples",
+                          "Number of points sampled uniformly by area on the measured mesh (1 to 100000000). "
+                          "The paper uses one million."));
+  parlst.addParam(RichFloat("Tolerance", 0.42f, "Tolerance",
+                            "The error permission, in mesh units (mm for the paper's part): a sample is "
+                            "accurate when its distance to the reference is at most this. Must be positive."));
+  parlst.addParam(RichInt("Seed", 0, "Random Seed",
+                          "Seed of the sampling (0 or more): the same seed gives the same samples and figures."));
+  parlst.addParam(RichBool("DeviationMap", false, "Colour Deviation Map",
+                           "Also store each vertex's distance to the reference in the vertex quality of the "
+                           "measured mesh and colour it: blue on the reference, green at the tolerance, red at "
+                           "twice the tolerance and beyond."));
+}
+
+bool FilterMeasureAccuracyPlugin::fail(const QString& message)
+{
+  // meshlabserver prints only the log of a failed filter, the GUI shows errorMessage: say it in both.
+  errorMessage = message;
+  Log(GLLogStream::WARNING, qUtf8Printable(message));
+  return false;
+}
+
+bool FilterMeasureAccuracyPlugin::applyFilter(QAction* action, MeshDocument&, const RichParameterList& parlst,
+                                              vcg::CallBackPos* cb)
+{
+  const QString name = filterName(action);
+  MeshModel* measured = parlst.getMesh("MeasuredMesh");
+  MeshModel* reference = parlst.getMesh("ReferenceMesh");
+  const int sample_count = parlst.getInt("Samples");
+  const double tolerance = parlst.getFloat("Tolerance");
+  const int seed = parlst.getInt("Seed");
+  const bool deviation_map = parlst.getBool("DeviationMap");
+
+  if (measured == nullptr || reference == nullptr)
+    return fail(name + ": choose both the measured and the reference mesh.");
+  if (measured == reference)
+    return fail(name + ": the measured and the reference mesh are the same layer; choose two different layers.");
+  if (sample_count < 1 || sample_count > kMaxSamples)
+    return fail(name + QString(": Samples must be between 1 and %1 (it is %2).").arg(kMaxSamples).arg(sample_count));
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+    return fail(name + QString(": Tolerance must be a positive number of mesh units (it is %1).").arg(tolerance));
+  if (seed < 0)
+    return fail(name + QString(": Seed must be 0 or more (it is %1).").arg(seed));
+  std::string problem = mesh_input_problem(measured->cm);
+  if (!problem.empty())
+    return fail(name + ": measured mesh '" + measured->label() + "': " + QString::fromStdString(problem) + ".");
+  problem = mesh_input_problem(reference->cm);
+  if (!problem.empty())
+    return fail(name + ": reference mesh '" + reference->label() + "': " + QString::fromStdString(problem) + ".");
+
+  const Eigen::Affine3d measured_to_world = layer_to_world(measured->cm);
+  const Eigen::Affine3d reference_to_world = layer_to_world(reference->cm);
+
+  if (cb != nullptr)
+    cb(0, "Sampling the measured mesh");
+  std::string error;
+  Eigen::MatrixX3d samples =
+      sample_surface_uniform(measured->cm, Eigen::Index(sample_count), std::uint64_t(seed), &error);
+  if (samples.rows() == 0)
+    return fail(name + ": measured mesh '" + measured->label() + "': " + QString::fromStdString(error) + ".");
+  samples = (samples * measured_to_world.linear().transpose()).rowwise() + measured_to_world.translation().transpose();
+
+  if (cb != nullptr)
+    cb(5, "Indexing the reference mesh");
+  SurfaceDistanceIndex index(reference->cm, reference_to_world);
+  if (!index.ok())
+    return fail(name + ": reference mesh '" + reference->label() + "': " + QString::fromStdString(index.error()) + ".");
+
+  const AccuracyReport r =
+      measure_accuracy(samples, index, tolerance, false, progress_range(cb, 10, deviation_map ? 80 : 100));
+  if (!r.ok)
+    return fail(name + ": " + QString::fromStdString(r.error) + ".");
+
+  Eigen::VectorXd vertex_distance;
+  if (deviation_map &&
+      !vertex_distances(measured->cm, index, vertex_distance, error, measured_to_world, progress_range(cb, 80, 100)))
+    return fail(name + ": deviation map of '" + measured->label() + "': " + QString::fromStdString(error) + ".");
+
+  Log("Accuracy: %.1f%% of %d samples within %g (mean %.3f, RMS %.3f, max %.3f)", 100.0 * r.within_tolerance_share,
+      int(r.sample_count), tolerance, r.mean, r.rms, r.max);
+  Log("Accuracy: measured '%s' against reference '%s' (%d faces indexed, %d degenerate skipped), seed %d",
+      qUtf8Printable(measured->label()), qUtf8Printable(reference->label()), int(index.triangle_count()),
+      int(index.skipped_face_count()), seed);
+  for (int b = 0; b <= kAccuracyHistogramBins; ++b) {
+    const double share = double(r.histogram[size_t(b)]) / double(r.sample_count);
+    const QString bar(int(std::lround(40.0 * share)), QChar('#'));
+    if (b < kAccuracyHistogramBins)
+      Log("Accuracy histogram [%.3f, %.3f): %5.1f%% %s", b * r.histogram_bin_width, (b + 1) * r.histogram_bin_width,
+          100.0 * share, qUtf8Printable(bar));
+    else
+      Log("Accuracy histogram >= %.3f: %5.1f%% %s", b * r.histogram_bin_width, 100.0 * share, qUtf8Printable(bar));
+  }
+
+  if (deviation_map) {
+    measured->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+    for (auto& v : measured->cm.vert)
+      if (!v.IsD())
+        v.Q() = Scalarm(vertex_distance(Eigen::Index(vcg::tri::Index(measured->cm, v))));
+    // Reversed range: blue at 0, green at the tolerance, red at twice the tolerance and beyond.
+    vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(measured->cm, Scalarm(2.0 * tolerance), Scalarm(0.0));
+    Log("Accuracy: deviation map written to the vertex quality and colour of '%s' (max vertex distance %.3f)",
+        qUtf8Printable(measured->label()), vertex_distance.maxCoeff());
+  }
+  return true;
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(FilterMeasureAccuracyPlugin)
