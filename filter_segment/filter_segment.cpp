@@ -6,6 +6,7 @@
 #include "common/move_faces_to_new_segment.h"
 #include "common/segment_attribute.h"
 #include "common/segment_by_normal_angle.h"
+#include "common/segment_by_primitive_growing.h"
 #include "common/segment_primitive_attribute.h"
 #include "common/split_segments_by_plane.h"
 
@@ -62,7 +63,7 @@ std::vector<int> segments_of_faces(const std::vector<int>& segment_of_face, cons
 
 FilterSegmentPlugin::FilterSegmentPlugin()
 {
-  typeList << SEGMENT_AUTO << SEGMENT_MERGE_SELECTED << SEGMENT_SPLIT_BY_PLANE << SEGMENT_SPLIT_BY_SELECTION
+  typeList << SEGMENT_AUTO << SEGMENT_AUTO_PRIMITIVE << SEGMENT_MERGE_SELECTED << SEGMENT_SPLIT_BY_PLANE << SEGMENT_SPLIT_BY_SELECTION
            << SEGMENT_SELECT;
   for (FilterIDType t : types())
     actionList << new QAction(filterName(t), this);
@@ -74,6 +75,7 @@ QString FilterSegmentPlugin::filterName(FilterIDType filter) const
 {
   switch (filter) {
   case SEGMENT_AUTO: return "Segment: Auto by Normal Angle";
+  case SEGMENT_AUTO_PRIMITIVE: return "Segment: Auto by Primitive Fit";
   case SEGMENT_MERGE_SELECTED: return "Segment: Merge Selected";
   case SEGMENT_SPLIT_BY_PLANE: return "Segment: Split by Plane";
   case SEGMENT_SPLIT_BY_SELECTION: return "Segment: Split by Selection";
@@ -96,6 +98,14 @@ QString FilterSegmentPlugin::filterInfo(FilterIDType filter) const
            "surface, and segments smaller than <i>Min Segment Size</i> are absorbed by the neighbour they "
            "share the longest border with.<br><br>See: <i>J. Yang, K. Oh, H.-I. Choi</i>, <b>\"Mesh Editing "
            "with an Intuitive User Interface\"</b>, section 2.1." + storage;
+  case SEGMENT_AUTO_PRIMITIVE:
+    return "Splits a scan into segments that each fit one primitive (plane, sphere, cylinder, cone, torus), for "
+           "scans whose blurred edges and fillets change the normal so gradually that <i>Auto by Normal "
+           "Angle</i> walks across them. From the flattest faces, a patch is fitted and grown over the faces "
+           "within <i>Tolerance</i> of its primitive whose normals agree with it, refitting as it grows; "
+           "regions curved tighter than a seed patch (edges rounded by the scanner) are dissolved, and the "
+           "faces left over go to the neighbouring region whose primitive is nearest, which splits a blurred "
+           "edge at its bisector." + storage;
   case SEGMENT_MERGE_SELECTED:
     return "Every segment touched by the face selection becomes one segment." + storage;
   case SEGMENT_SPLIT_BY_PLANE:
@@ -139,6 +149,20 @@ void FilterSegmentPlugin::initParameterSet(QAction* action, MeshModel& m, RichPa
                             "Segments with fewer faces are absorbed by the neighbouring segment they share "
                             "the longest border with. 0 or 1 keeps every segment."));
     break;
+  case SEGMENT_AUTO_PRIMITIVE: {
+    const SegmentByPrimitiveGrowingParams growing;
+    parlst.addParam(RichFloat("Tolerance", float(growing.tolerance), "Tolerance",
+                              "A face joins a primitive when it is this close to it, in mesh units; 0 estimates "
+                              "it from the scan's roughness."));
+    parlst.addParam(RichFloat("NormalAngle", float(growing.normal_angle_deg), "Normal Angle (degrees)",
+                              "...and when its smoothed normal is within this angle of the primitive's."));
+    parlst.addParam(RichInt("SeedPatchFaces", growing.seed_patch_faces, "Seed Patch Size (faces)",
+                            "Faces of the patch each region starts from; regions curved tighter than such a "
+                            "patch are taken for rounded edges."));
+    parlst.addParam(RichInt("NormalSmoothing", growing.smoothing_iterations, "Normal Smoothing Steps",
+                            "Passes of face normal averaging against scan noise."));
+    break;
+  }
   case SEGMENT_SPLIT_BY_PLANE:
     parlst.addParam(RichInt("Segment", -1, "Segment",
                             "Id of the segment to cut; -1 cuts the segments of the selected faces."));
@@ -173,6 +197,7 @@ bool FilterSegmentPlugin::applyFilter(QAction* action, MeshDocument& md, const R
     return fail(filterName(action) + ": " + QString::fromStdString(problem) + ".");
   switch (ID(action)) {
   case SEGMENT_AUTO: return autoSegment(*mm, parlst, cb);
+  case SEGMENT_AUTO_PRIMITIVE: return autoSegmentByPrimitives(*mm, parlst, cb);
   case SEGMENT_MERGE_SELECTED: return mergeSelected(*mm);
   case SEGMENT_SPLIT_BY_PLANE: return splitByPlane(*mm, parlst);
   case SEGMENT_SPLIT_BY_SELECTION: return splitBySelection(*mm);
@@ -216,6 +241,35 @@ bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& pa
       "%d smoothing steps, min size %d faces, in %lld ms.",
       mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces,
       timer.elapsed());
+  return true;
+}
+
+bool FilterSegmentPlugin::autoSegmentByPrimitives(MeshModel& mm, const RichParameterList& parlst,
+                                                  vcg::CallBackPos* cb)
+{
+  const QString name = "Segment: Auto by Primitive Fit";
+  SegmentByPrimitiveGrowingParams params;
+  params.tolerance = parlst.getFloat("Tolerance");
+  params.normal_angle_deg = parlst.getFloat("NormalAngle");
+  params.seed_patch_faces = parlst.getInt("SeedPatchFaces");
+  params.smoothing_iterations = parlst.getInt("NormalSmoothing");
+  if (!std::isfinite(params.tolerance) || params.tolerance < 0)
+    return fail(name + QString(": Tolerance must be 0 (automatic) or positive, not %1.").arg(params.tolerance));
+  if (!(params.normal_angle_deg > 0 && params.normal_angle_deg < 90))
+    return fail(name + QString(": Normal Angle must be between 0 and 90 degrees, not %1.").arg(params.normal_angle_deg));
+  if (params.seed_patch_faces < 4)
+    return fail(name + QString(": Seed Patch Size must be at least 4 faces, not %1.").arg(params.seed_patch_faces));
+  if (params.smoothing_iterations < 0 || params.smoothing_iterations > 1000)
+    return fail(name + QString(": Normal Smoothing Steps must be 0 to 1000, not %1.").arg(params.smoothing_iterations));
+
+  QElapsedTimer timer;
+  timer.start();
+  std::vector<int> segment_of_face;
+  SegmentByPrimitiveGrowingReport report;
+  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, cb);
+  storeSegments(mm, segment_of_face);
+  Log("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
+      qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
   return true;
 }
 

@@ -13,7 +13,7 @@ class FilterSegmentPlugin : public QObject, public MeshFilterInterface
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { SEGMENT_AUTO, SEGMENT_MERGE_SELECTED, SEGMENT_SPLIT_BY_PLANE, SEGMENT_SPLIT_BY_SELECTION, SEGMENT_SELECT };
+  enum { SEGMENT_AUTO, SEGMENT_AUTO_PRIMITIVE, SEGMENT_MERGE_SELECTED, SEGMENT_SPLIT_BY_PLANE, SEGMENT_SPLIT_BY_SELECTION, SEGMENT_SELECT };
 
   FilterSegmentPlugin();
 
@@ -33,6 +33,7 @@ public:
 private:
   bool fail(const QString& message);
   bool autoSegment(MeshModel& mm, const RichParameterList& parlst, vcg::CallBackPos* cb);
+  bool autoSegmentByPrimitives(MeshModel& mm, const RichParameterList& parlst, vcg::CallBackPos* cb);
   bool mergeSelected(MeshModel& mm);
   bool splitByPlane(MeshModel& mm, const RichParameterList& parlst);
   bool splitBySelection(MeshModel& mm);

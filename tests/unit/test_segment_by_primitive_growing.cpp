@@ -1,0 +1,300 @@
+// Unit tests of segment_by_primitive_growing: a noisy extruded profile (plane, cylindrical fillet, plane,
+// rounded corner, plane) is split into its CAD faces with the rounded corner split between its two planes
+// by nearest surface; a noisy sphere is one segment; bad input does not crash. On the tests' mesh type and
+// MeshLab's CMeshO (float coordinates).
+#include "test_mesh.h"
+
+#include "common/face_adjacency.h"
+#include "common/segment_by_primitive_growing.h"
+
+#include <common/ml_mesh_type.h>
+#include <gtest/gtest.h>
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/create/platonic.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <vector>
+
+using namespace primitive_edit;
+
+namespace {
+
+template <class M>
+typename M::CoordType grow_coord(double x, double y, double z)
+{
+  using S = typename M::ScalarType;
+  return typename M::CoordType(S(x), S(y), S(z));
+}
+
+// A 2D profile in (x, z), by arc length: plane z = 0 for x in [-6, 0]; a convex cylindrical fillet of
+// radius 2 around (0, -2) down to (2, -2); the wall x = 2 down to z = -8; a corner rounded with radius
+// 0.3 (the CAD corner is sharp: a blurred scan edge); the floor z = -8 for x in [2, 8].
+struct Profile
+{
+  static constexpr double kPi = 3.14159265358979323846;
+  static constexpr double kRound = 0.3;
+  double length() const { return 6.0 + kPi + (6.0 - kRound) + 0.5 * kPi * kRound + (6.0 - kRound); }
+  // Point and outward normal at arc length s.
+  void at(double s, double& x, double& z, double& nx, double& nz) const
+  {
+    if (s < 6.0) {
+      x = s - 6.0, z = 0.0, nx = 0.0, nz = 1.0;
+      return;
+    }
+    s -= 6.0;
+    if (s < kPi) {
+      const double a = s / 2.0; // angle from the top of the fillet
+      nx = std::sin(a), nz = std::cos(a), x = 2.0 * nx, z = -2.0 + 2.0 * nz;
+      return;
+    }
+    s -= kPi;
+    if (s < 6.0 - kRound) {
+      x = 2.0, z = -2.0 - s, nx = 1.0, nz = 0.0;
+      return;
+    }
+    s -= 6.0 - kRound;
+    if (s < 0.5 * kPi * kRound) {
+      // Concave corner: centre (2 + r, -8 + r), normal turning from +x to +z.
+      const double a = s / kRound;
+      nx = std::cos(a), nz = std::sin(a);
+      x = 2.0 + kRound - kRound * nx, z = -8.0 + kRound - kRound * nz;
+      return;
+    }
+    s -= 0.5 * kPi * kRound;
+    x = 2.0 + kRound + s, z = -8.0, nx = 0.0, nz = 1.0;
+  }
+  // Index of the nearest CAD face to (x, z): 0 top plane, 1 fillet, 2 wall, 3 floor (the ground truth of a
+  // scan, like bench/data's truth files).
+  static int nearest_face(double x, double z)
+  {
+    const double d_top = x <= 0 ? std::abs(z) : std::hypot(x, z);
+    const double rho = std::hypot(x, z + 2.0);
+    const bool in_fillet = x >= 0 && z >= -2.0;
+    const double d_fillet = in_fillet ? std::abs(rho - 2.0) : std::numeric_limits<double>::infinity();
+    const double d_wall = z <= -2.0 && z >= -8.0 ? std::abs(x - 2.0) : std::hypot(x - 2.0, std::min(std::abs(z + 2.0), std::abs(z + 8.0)));
+    const double d_floor = x >= 2.0 ? std::abs(z + 8.0) : std::hypot(x - 2.0, z + 8.0);
+    const double d[4] = {d_top, d_fillet, d_wall, d_floor};
+    return int(std::min_element(d, d + 4) - d);
+  }
+};
+
+// The profile extruded along y in [0, 8], grid step h, vertices moved along the normal by Gaussian noise;
+// truth[f] = nearest CAD face of each triangle's centroid.
+template <class M>
+void make_profile_scan(M& m, double h, double noise, std::vector<int>& truth)
+{
+  m.Clear();
+  const Profile profile;
+  const int nu = int(std::ceil(profile.length() / h));
+  const int nv = int(std::ceil(8.0 / h));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> gauss(0.0, noise);
+  auto vi = vcg::tri::Allocator<M>::AddVertices(m, size_t(nu + 1) * size_t(nv + 1));
+  for (int i = 0; i <= nu; ++i)
+    for (int j = 0; j <= nv; ++j, ++vi) {
+      double x, z, nx, nz;
+      profile.at(profile.length() * i / nu, x, z, nx, nz);
+      const double e = noise > 0 ? gauss(rng) : 0.0;
+      vi->P() = grow_coord<M>(x + e * nx, 8.0 * j / nv, z + e * nz);
+    }
+  truth.clear();
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      auto* a = &m.vert[size_t(i) * size_t(nv + 1) + size_t(j)];
+      auto* b = &m.vert[size_t(i + 1) * size_t(nv + 1) + size_t(j)];
+      auto* c = &m.vert[size_t(i + 1) * size_t(nv + 1) + size_t(j + 1)];
+      auto* d = &m.vert[size_t(i) * size_t(nv + 1) + size_t(j + 1)];
+      vcg::tri::Allocator<M>::AddFace(m, a, c, b);
+      vcg::tri::Allocator<M>::AddFace(m, a, d, c);
+    }
+  for (const auto& f : m.face) {
+    const auto c = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
+    truth.push_back(Profile::nearest_face(double(c[0]), double(c[2])));
+  }
+}
+
+// Share of faces whose segment's majority truth label is their own truth label.
+double labelled_share(const std::vector<int>& seg, const std::vector<int>& truth, int K)
+{
+  std::vector<std::map<int, int>> votes(size_t(std::max(K, 0)));
+  for (size_t f = 0; f < seg.size(); ++f)
+    ++votes[size_t(seg[f])][truth[f]];
+  std::vector<int> label(size_t(std::max(K, 0)), -1);
+  for (int k = 0; k < K; ++k) {
+    int best = 0;
+    for (const auto& [t, n] : votes[size_t(k)])
+      if (n > best)
+        best = n, label[size_t(k)] = t;
+  }
+  size_t ok = 0;
+  for (size_t f = 0; f < seg.size(); ++f)
+    ok += label[size_t(seg[f])] == truth[f] ? 1 : 0;
+  return seg.empty() ? 0.0 : double(ok) / double(seg.size());
+}
+
+template <class M>
+void expect_dense_ids(const M& m, const std::vector<int>& seg, int K)
+{
+  ASSERT_EQ(seg.size(), m.face.size());
+  std::vector<char> used(size_t(std::max(K, 0)), 0);
+  for (size_t f = 0; f < seg.size(); ++f) {
+    if (m.face[f].IsD()) {
+      EXPECT_EQ(seg[f], -1);
+      continue;
+    }
+    ASSERT_GE(seg[f], 0);
+    ASSERT_LT(seg[f], K);
+    used[size_t(seg[f])] = 1;
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), 1), K);
+}
+
+template <class M>
+class PrimitiveGrowingTest : public ::testing::Test {};
+using GrowMeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+TYPED_TEST_SUITE(PrimitiveGrowingTest, GrowMeshTypes);
+
+TYPED_TEST(PrimitiveGrowingTest, NoisyProfileGivesOneSegmentPerCadFace)
+{
+  TypeParam m;
+  std::vector<int> truth;
+  make_profile_scan(m, 0.12, 0.02, truth);
+  std::vector<int> seg;
+  SegmentByPrimitiveGrowingReport report;
+  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+  expect_dense_ids(m, seg, K);
+  EXPECT_EQ(K, 4);
+  EXPECT_GT(report.tolerance, 0.0);
+  EXPECT_GT(labelled_share(seg, truth, K), 0.97);
+  // The fillet is recognised as a cylinder of radius 2 along y, the rest as planes.
+  ASSERT_EQ(report.primitive_of_segment.size(), size_t(K));
+  int cylinders = 0, planes = 0;
+  for (const auto& p : report.primitive_of_segment) {
+    ASSERT_TRUE(p.has_value());
+    if (p->type == PrimitiveType::Cylinder) {
+      ++cylinders;
+      EXPECT_NEAR(p->radius, 2.0, 0.1);
+      EXPECT_GT(std::abs(p->axis.y()), 0.99);
+    }
+    planes += p->type == PrimitiveType::Plane ? 1 : 0;
+  }
+  EXPECT_EQ(cylinders, 1);
+  EXPECT_EQ(planes, 3);
+}
+
+TYPED_TEST(PrimitiveGrowingTest, RoundedCornerIsSplitBetweenItsPlanesByNearestSurface)
+{
+  TypeParam m;
+  std::vector<int> truth;
+  make_profile_scan(m, 0.12, 0.02, truth);
+  std::vector<int> seg;
+  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg);
+  ASSERT_GE(K, 1);
+  // The faces of the rounded corner (the scan's blurred edge between wall and floor): each goes to the
+  // segment that holds most of its nearest CAD face.
+  std::vector<std::map<int, int>> votes(static_cast<size_t>(K));
+  for (size_t f = 0; f < seg.size(); ++f)
+    ++votes[size_t(seg[f])][truth[f]];
+  auto majority = [&](int k) {
+    int best = -1, count = 0;
+    for (const auto& [t, n] : votes[size_t(k)])
+      if (n > count)
+        best = t, count = n;
+    return best;
+  };
+  int corner = 0, right = 0;
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    const auto c = (m.face[f].cP(0) + m.face[f].cP(1) + m.face[f].cP(2)) / 3;
+    const double x = double(c[0]), z = double(c[2]);
+    if (x < 2.0 + Profile::kRound && z < -8.0 + Profile::kRound && x > 1.95 && z > -8.05) {
+      ++corner;
+      right += majority(seg[f]) == truth[f] ? 1 : 0;
+    }
+  }
+  ASSERT_GT(corner, 20);
+  EXPECT_GE(double(right) / corner, 0.85);
+}
+
+TYPED_TEST(PrimitiveGrowingTest, NoisySphereIsOneSegment)
+{
+  TypeParam m;
+  vcg::tri::Sphere(m, 5);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> gauss(0.0, 0.003);
+  for (auto& v : m.vert) {
+    const auto p = v.P();
+    const double s = 1.0 + gauss(rng);
+    v.P() = grow_coord<TypeParam>(double(p[0]) * s, double(p[1]) * s, double(p[2]) * s);
+  }
+  std::vector<int> seg;
+  SegmentByPrimitiveGrowingReport report;
+  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+  expect_dense_ids(m, seg, K);
+  EXPECT_EQ(K, 1);
+  ASSERT_EQ(report.primitive_of_segment.size(), 1u);
+  ASSERT_TRUE(report.primitive_of_segment[0].has_value());
+  EXPECT_EQ(report.primitive_of_segment[0]->type, PrimitiveType::Sphere);
+  EXPECT_NEAR(report.primitive_of_segment[0]->radius, 1.0, 0.02);
+}
+
+TYPED_TEST(PrimitiveGrowingTest, BadInputDoesNotCrash)
+{
+  std::vector<int> seg{1, 2, 3};
+  TypeParam empty;
+  EXPECT_EQ(segment_by_primitive_growing(empty, SegmentByPrimitiveGrowingParams(), seg), 0);
+  EXPECT_TRUE(seg.empty());
+
+  TypeParam m;
+  std::vector<int> truth;
+  make_profile_scan(m, 0.3, 0.0, truth);
+  EXPECT_EQ(segment_by_primitive_growing(m, FaceAdjacency{}, SegmentByPrimitiveGrowingParams(), seg), 0)
+      << "adjacency of another mesh";
+
+  // A repeated-vertex face, a NaN vertex, a non-manifold fin on an edge, a deleted face.
+  auto* v = &m.vert[0];
+  auto degenerate = vcg::tri::Allocator<TypeParam>::AddFaces(m, 1);
+  degenerate->V(0) = v + 0;
+  degenerate->V(1) = v + 0;
+  degenerate->V(2) = v + 1;
+  auto vi = vcg::tri::Allocator<TypeParam>::AddVertices(m, 2);
+  v = &m.vert[0];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vi[0].P() = grow_coord<TypeParam>(nan, 0.0, nan);
+  vi[1].P() = grow_coord<TypeParam>(-5.0, 1.0, 3.0);
+  vcg::tri::Allocator<TypeParam>::AddFace(m, v + 0, v + 1, &*vi);
+  vcg::tri::Allocator<TypeParam>::AddFace(m, v + 0, v + 1, &*(vi + 1));
+  vcg::tri::Allocator<TypeParam>::DeleteFace(m, m.face[3]);
+
+  SegmentByPrimitiveGrowingReport report;
+  for (const SegmentByPrimitiveGrowingParams& params :
+       {SegmentByPrimitiveGrowingParams(), SegmentByPrimitiveGrowingParams{nan, nan, -5, -1, -2},
+        SegmentByPrimitiveGrowingParams{1e-9, 89.0, 3, 1, 0}}) {
+    const int K = segment_by_primitive_growing(m, params, seg, &report);
+    EXPECT_GE(K, 1);
+    expect_dense_ids(m, seg, K);
+    EXPECT_TRUE(std::isfinite(report.tolerance));
+    EXPECT_EQ(report.primitive_of_segment.size(), size_t(K));
+    for (const auto& p : report.primitive_of_segment) {
+      if (p) {
+        EXPECT_TRUE(primitive_is_valid(*p));
+      }
+    }
+  }
+
+  // A lone triangle and a mesh whose vertices all coincide: no primitive, still labelled.
+  TypeParam tiny;
+  vcg::tri::Allocator<TypeParam>::AddVertices(tiny, 3);
+  tiny.vert[1].P() = grow_coord<TypeParam>(1, 0, 0);
+  tiny.vert[2].P() = grow_coord<TypeParam>(0, 1, 0);
+  vcg::tri::Allocator<TypeParam>::AddFace(tiny, &tiny.vert[0], &tiny.vert[1], &tiny.vert[2]);
+  EXPECT_EQ(segment_by_primitive_growing(tiny, SegmentByPrimitiveGrowingParams(), seg), 1);
+  for (auto& p : tiny.vert)
+    p.P() = grow_coord<TypeParam>(1, 1, 1);
+  EXPECT_EQ(segment_by_primitive_growing(tiny, SegmentByPrimitiveGrowingParams(), seg), 1);
+}
+
+} // namespace
