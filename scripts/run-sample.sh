@@ -12,7 +12,7 @@ cd "$here"
 scripts/setup-debian.sh
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" --target filter_segment filter_primitive_fit filter_measure_accuracy edit_primitive
 
 python3 bench/run_pipeline.py --meshlabserver build/meshlab-prefix/bin/meshlabserver \
   --cache build/bench-cache --report build/sample-report.md "$@"
