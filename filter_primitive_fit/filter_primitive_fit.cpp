@@ -237,7 +237,8 @@ bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParamet
   if (type_index == 0) {
     const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights);
     if (!automatic.ok)
-      return fail(name + ": " + what + " fits no primitive: " + QString::fromStdString(automatic.message));
+      return fail(name + ": " + what + (segment == -1 ? " fit" : " fits") + " no primitive: " +
+                  QString::fromStdString(automatic.message));
     fit = automatic.best;
   } else {
     const PrimitiveType type = PrimitiveType(type_index - 1);

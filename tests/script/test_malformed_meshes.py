@@ -31,6 +31,9 @@ TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
 
 # (name, params, ours): every parameter listed by name, as meshlabserver 2020.09 requires.
 FILTERS = [
+    ("Segment: Auto by Primitive Fit", [param("Tolerance", 0, "RichFloat"), param("NormalAngle", 30, "RichFloat"),
+                                        param("SeedPatchFaces", 20, "RichInt"), param("NormalSmoothing", 2, "RichInt")],
+     True),
     ("Segment: Auto by Normal Angle", [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 1, "RichInt"),
                                        param("MinSegmentFaces", 0, "RichInt")], True),
     ("Conditional Face Selection", [param("condSelect", "fq < 2", "RichString")], False),
@@ -58,7 +61,7 @@ FILTERS = [
                                              param("Tolerance", 0.1, "RichFloat"), param("Seed", 1, "RichInt"),
                                              param("DeviationMap", False, "RichBool")], True),
 ]
-COLUMN = ["auto", "select", "merge", "split plane", "select", "split sel", "select seg", "fit", "snap", "fit all",
+COLUMN = ["auto fit", "auto", "select", "merge", "split plane", "select", "split sel", "select seg", "fit", "snap", "fit all",
           "accuracy (measured)", "accuracy (reference)"]
 
 
