@@ -188,7 +188,7 @@ def run_scan(args, label, scan, truth, segmentation):
                param("Seed", 1, "RichInt"), param("DeviationMap", False, "RichBool")]
     seg_name, seg_params, _ = segmentation
     filters = [(MEASURE, measure), (seg_name, seg_params),
-               (FIT_ALL, [param("Tolerance", 0, "RichFloat"), param("Snap", True, "RichBool"),
+               (FIT_ALL, [param("Tolerance", args.fit_tolerance, "RichFloat"), param("Snap", True, "RichBool"),
                           param("Export", fit_json, "RichString"), param("SharpEdges", True, "RichBool")]),
                (MEASURE, measure)]
     script = os.path.join(work, "pipeline.mlx")
@@ -262,6 +262,8 @@ def main():
     p.add_argument("--reference-json", default=os.path.join(HERE, "data", "bracket_reference.json"))
     p.add_argument("--samples", type=int, default=1000000)
     p.add_argument("--tolerance", type=float, default=0.42)
+    p.add_argument("--fit-tolerance", type=float, default=0.0,
+                   help="Fit All Segments' RMS limit in mm (0: 1%% of each segment's size)")
     p.add_argument("--segment", help="segmentation filter (default: the best available: %s)" % " or ".join(PREFERRED))
     p.add_argument("--segment-param", action="append", default=[], metavar="NAME=VALUE",
                    help="a parameter of the segmentation filter (repeatable); Name:RichType=Value for a "
