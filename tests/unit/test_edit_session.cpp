@@ -99,6 +99,12 @@ protected:
     params.angle_deg = 30;
     ASSERT_TRUE(session.auto_segment(params).ok);
   }
+  // vcg's ~TriMesh leaves per-face and per-mesh attributes allocated: free them for LeakSanitizer.
+  void TearDown() override
+  {
+    session.detach();
+    mesh.ClearAttributes();
+  }
   int side() const { return session.segment_of(0); }
   int bottom() const { return session.segment_of(kFirstBottomFace); }
   int top() const { return session.segment_of(kFirstTopFace); }
