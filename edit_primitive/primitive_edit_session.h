@@ -13,6 +13,7 @@
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 
+#include "common/count_segments.h"
 #include "common/describe_primitive.h"
 #include "common/face_adjacency.h"
 #include "common/fit_primitive.h"
@@ -96,13 +97,7 @@ public:
 
   bool attached() const { return mesh_ != nullptr; }
   bool has_segments() const { return segment_count() > 0; }
-  int segment_count() const
-  {
-    int k = 0;
-    for (int s : labels_)
-      k = std::max(k, s + 1);
-    return k;
-  }
+  int segment_count() const { return count_segments(labels_); }
   const std::vector<int>& segment_of_face() const { return labels_; }
   int segment_of(int face) const
   {

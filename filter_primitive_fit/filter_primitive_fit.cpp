@@ -1,5 +1,6 @@
 #include "filter_primitive_fit.h"
 
+#include "common/count_segments.h"
 #include "common/describe_primitive.h"
 #include "common/fit_primitive.h"
 #include "common/fit_primitive_auto.h"
@@ -31,14 +32,6 @@ constexpr double kDegrees = 57.29577951308232;
 
 // Type parameter: index 0 is Auto, then PrimitiveType in order.
 const QStringList kTypeNames = {"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"};
-
-int segment_count(const std::vector<int>& segment_of_face)
-{
-  int k = 0;
-  for (int s : segment_of_face)
-    k = std::max(k, s + 1);
-  return k;
-}
 
 QJsonArray json_vector(const Eigen::Vector3d& v) { return QJsonArray{v.x(), v.y(), v.z()}; }
 
@@ -208,7 +201,7 @@ bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParamet
 
   std::vector<int> segment_of_face;
   const bool segmented = read_segment_ids(m, segment_of_face);
-  const int count = segmented ? segment_count(segment_of_face) : 0;
+  const int count = segmented ? count_segments(segment_of_face) : 0;
   if (!segmented)
     segment_of_face.assign(m.face.size(), -1);
   // The faces to fit carry label `target`: an existing segment, or a new id for the selected faces.
@@ -312,7 +305,7 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
 
   QElapsedTimer timer;
   timer.start();
-  const int count = segment_count(segment_of_face);
+  const int count = count_segments(segment_of_face);
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
   AutoFitOptions options;
   options.tolerance = tolerance;

@@ -1,5 +1,6 @@
 #include "filter_segment.h"
 
+#include "common/count_segments.h"
 #include "common/face_adjacency.h"
 #include "common/merge_segments.h"
 #include "common/mesh_input_problem.h"
@@ -19,14 +20,6 @@
 using namespace primitive_edit;
 
 namespace {
-
-int segment_count(const std::vector<int>& segment_of_face)
-{
-  int k = 0;
-  for (int s : segment_of_face)
-    k = std::max(k, s + 1);
-  return k;
-}
 
 // The segments of a mesh, or one segment holding every live face when it has none yet: the merge and
 // split filters then work on an unsegmented mesh as on a one-segment one.
@@ -231,7 +224,7 @@ bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& pa
                     .arg(params.min_segment_faces));
 
   std::vector<int> before;
-  const int segments_before = read_segment_ids(mm.cm, before) ? segment_count(before) : 0;
+  const int segments_before = read_segment_ids(mm.cm, before) ? count_segments(before) : 0;
   QElapsedTimer timer;
   timer.start();
   std::vector<int> segment_of_face;
@@ -281,7 +274,7 @@ bool FilterSegmentPlugin::mergeSelected(MeshModel& mm)
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
     Log("Segment: Merge Selected: the mesh has no segments yet; all faces are one segment.");
-  const int before = segment_count(segment_of_face);
+  const int before = count_segments(segment_of_face);
   const std::vector<int> segments = segments_of_faces(segment_of_face, faces);
   if (segments.size() < 2) {
     Log("Segment: Merge Selected: the selection touches one segment only; nothing to merge (%d segments).", before);
@@ -311,7 +304,7 @@ bool FilterSegmentPlugin::splitByPlane(MeshModel& mm, const RichParameterList& p
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
     Log("Segment: Split by Plane: the mesh has no segments yet; all faces are one segment.");
-  const int before = segment_count(segment_of_face);
+  const int before = count_segments(segment_of_face);
   std::vector<int> segments;
   if (segment == -1) {
     segments = segments_of_faces(segment_of_face, selected_faces(mm.cm));
@@ -340,7 +333,7 @@ bool FilterSegmentPlugin::splitBySelection(MeshModel& mm)
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
     Log("Segment: Split by Selection: the mesh had no segments yet; the other faces are one segment.");
-  const int before = segment_count(segment_of_face);
+  const int before = count_segments(segment_of_face);
   const int after = move_faces_to_new_segment(segment_of_face, faces);
   storeSegments(mm, segment_of_face);
   Log("Segment: Split by Selection: %d faces moved to a new segment; %d segments before, %d after.",
@@ -354,7 +347,7 @@ bool FilterSegmentPlugin::selectSegment(MeshModel& mm, const RichParameterList& 
   std::vector<int> segment_of_face;
   if (!read_segment_ids(mm.cm, segment_of_face))
     return fail("Segment: Select Segment: the mesh has no segments; run Segment: Auto by Normal Angle first.");
-  const int count = segment_count(segment_of_face);
+  const int count = count_segments(segment_of_face);
   if (segment < 0 || segment >= count)
     return fail(QString("Segment: Select Segment: there is no segment %1; ids go from 0 to %2.")
                     .arg(segment).arg(count - 1));
