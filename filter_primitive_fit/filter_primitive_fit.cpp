@@ -92,9 +92,11 @@ QString FilterPrimitiveFitPlugin::filterName(FilterIDType filter) const
 QString FilterPrimitiveFitPlugin::filterInfo(FilterIDType filter) const
 {
   const QString method =
-      "<br><br>Fitting starts from a type-constrained algebraic fit (after <i>J. Andrews, C. H. Séquin</i>, "
-      "<b>\"Type-constrained direct fitting of quadric surfaces\"</b>, CAD&A 11(1), 2014) and is refined on "
-      "orthogonal distances, with outliers near the segment's border down-weighted. The segments come from "
+      "<br><br>Fitting starts algebraically (a sphere by the normalised algebraic fit that the type-constrained "
+      "quadric fit of <i>J. Andrews, C. H. Séquin</i>, <b>\"Type-constrained direct fitting of quadric "
+      "surfaces\"</b>, CAD&A 11(1), 2014, gives for that type; cylinder, cone and torus axes from the normals, "
+      "estimated by a quadric fit when absent) and is refined on orthogonal distances, with outliers near the "
+      "segment's border down-weighted. The segments come from "
       "the <i>Segment:</i> filters.";
   switch (filter) {
   case PRIMITIVE_FIT_SEGMENT:
