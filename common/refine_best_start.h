@@ -3,12 +3,12 @@
 // Input:  start primitives (invalid ones are skipped), the full points N x 3 and weights (empty = all 1),
 //         a subsample of them (fit_subsample.h; may be the full set), options.
 // Output: the FitResult of the best start: each start is refined briefly (refine_primitive.h, at most
-//         10 iterations per round) on at most 500 points of the sample and scored by the median
-//         |distance| over all of them (robust: not fooled by a start that fits a small part and
-//         rejects the rest) or, with options.robust off, by the RMS; the winner is refined fully on
-//         the sample, then on all points when the sample is smaller. ok == false with a message when
-//         no start could be refined.
-// Cost:   O(S * 500 * iterations) for S starts, plus O((n + N) * iterations) for the winner.
+//         10 Levenberg-Marquardt iterations, no reweighting) on at most 500 points of the sample and
+//         scored by the median |distance| over all of them (robust: not fooled by a start that fits a
+//         small part and rejects the rest) or, with options.robust off, by the RMS; the winner is
+//         refined fully (with the robust rounds) on the sample, then on all points when the sample is
+//         smaller. ok == false with a message when no start could be refined.
+// Cost:   O(S * 500 * 10) for S starts, plus O((n + N) * iterations) for the winner.
 #ifndef PRIMITIVE_EDIT_REFINE_BEST_START_H
 #define PRIMITIVE_EDIT_REFINE_BEST_START_H
 
@@ -25,10 +25,12 @@ inline FitResult refine_best_start(const std::vector<Primitive>& starts, const E
                                    const Eigen::VectorXd& weights, const FitSample& sample,
                                    const FitOptions& options)
 {
-  // Screening: a few iterations of each start on at most 500 points; only the winner is refined fully.
+  // Screening: a few plain (not reweighted) iterations of each start on at most 500 points, judged by the
+  // median distance, which outliers do not sway; only the winner gets the robust rounds.
   const FitSample screen = fit_subsample(sample.points, Eigen::MatrixX3d(), sample.weights, 500);
   FitOptions screen_options = options;
   screen_options.max_iterations = std::min(options.max_iterations, 10);
+  screen_options.robust = false;
   Primitive winner;
   bool have_winner = false;
   double best_score = std::numeric_limits<double>::infinity();
