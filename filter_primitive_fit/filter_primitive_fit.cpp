@@ -4,6 +4,7 @@
 #include "common/describe_primitive.h"
 #include "common/fit_primitive.h"
 #include "common/fit_primitive_auto.h"
+#include "common/fit_segments_auto.h"
 #include "common/gather_segment_samples.h"
 #include "common/mesh_input_problem.h"
 #include "common/minimum_points_for.h"
@@ -311,25 +312,20 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
   AutoFitOptions options;
   options.tolerance = tolerance;
+  const std::vector<AutoFitResult> fits = fit_segments_auto(samples, options, 0, [&](int done, int total) {
+    if (cb != nullptr)
+      cb(snap ? 80 * done / total : 100 * done / total, "Fitting primitives");
+  });
   SegmentPrimitives primitives(static_cast<size_t>(count));
-  std::vector<AutoFitResult> fits(static_cast<size_t>(count));
   int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
   double fitted_area = 0, total_area = 0;
   for (int s = 0; s < count; ++s) {
-    if (cb != nullptr)
-      cb(snap ? 80 * s / count : 100 * s / count, "Fitting primitives");
-    const SegmentSamples& seg = samples[size_t(s)];
-    total_area += seg.area;
-    AutoFitResult& fit = fits[size_t(s)];
-    if (seg.points.rows() < minimum_points_for(PrimitiveType::Plane)) {
-      fit.message = "too few points";
-      continue;
-    }
-    fit = fit_primitive_auto(seg.points, seg.normals, seg.weights, options);
+    total_area += samples[size_t(s)].area;
+    const AutoFitResult& fit = fits[size_t(s)];
     if (fit.ok) {
       primitives[size_t(s)] = fit.best.primitive;
       ++per_type[int(fit.best.primitive.type)];
-      fitted_area += seg.area;
+      fitted_area += samples[size_t(s)].area;
     }
   }
   const qint64 fit_ms = timer.elapsed();
