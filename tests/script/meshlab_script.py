@@ -155,7 +155,10 @@ def run_meshlabserver(meshlabserver, workdir, inputs, script, output=None, mask=
     log = os.path.join(workdir, os.path.basename(script) + ".log")
     if os.path.exists(log):
         os.remove(log)
-    cmd = ["xvfb-run", "-a", meshlabserver, "-l", log]
+    # An auth file of our own: without one xvfb-run makes a temporary directory and, when it cannot remove it
+    # again, exits with 5 in place of meshlabserver's own status.
+    auth = os.path.join(workdir, ".Xauthority-%d" % os.getpid())
+    cmd = ["xvfb-run", "-a", "-f", auth, meshlabserver, "-l", log]
     for i in inputs:
         cmd += ["-i", i]
     cmd += ["-s", script]
