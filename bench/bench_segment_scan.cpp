@@ -6,10 +6,18 @@
 //   --segmented OUT.ply  the scan with face quality = segment id (for bench/score_segmentation.py),
 //   --fits OUT.json      the fitted primitive of each segment (score_segmentation.py's FIT_EXPORT.json),
 //   --snapped OUT.ply    the scan after snapping (for bench/bracket/measure_scan).
-// Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
+// --fit-tolerance MM is the fits' RMS limit (0, the default: 1% of each segment's size, as the filter's default).
+// --labels SEGMENTED.ply skips the segmentation and fits/snaps the segments given as face quality of that
+// PLY (the same scan, e.g. bench/true_segmentation.py's true surfaces: the ceiling of fit-and-snap).
+// --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
+// with that type (fit_primitive, all points) instead of letting fit_primitive_auto choose: the ceiling with the
+// true types.
+// Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
+//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
 #include "common/face_adjacency.h"
+#include "common/fit_primitive.h"
 #include "common/fit_primitive_auto.h"
 #include "common/gather_segment_samples.h"
 #include "common/segment_by_primitive_growing.h"
@@ -17,10 +25,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,12 +58,79 @@ void write_fits(const std::string& path, const std::vector<primitive_edit::AutoF
   out << "\n]}\n";
 }
 
+// Reads the segment of each face from the face quality of `path`, a PLY of the same scan (same face
+// count and, checked here, the same vertex positions): ids must be integers in [-1, 1e7); -1 = none.
+bool read_labels(const std::string& path, const bracket::BMesh& scan, std::vector<int>& segment_of_face, int& K,
+                 std::string& message)
+{
+  bracket::BMesh labelled;
+  if (!bracket::load_ply(labelled, path, true, &message))
+    return false;
+  if (labelled.face.size() != scan.face.size() || labelled.vert.size() != scan.vert.size()) {
+    message = path + ": " + std::to_string(labelled.face.size()) + " faces, " + std::to_string(labelled.vert.size()) +
+              " vertices; the scan has " + std::to_string(scan.face.size()) + ", " + std::to_string(scan.vert.size());
+    return false;
+  }
+  for (std::size_t v = 0; v < scan.vert.size(); ++v)
+    if ((labelled.vert[v].cP() - scan.vert[v].cP()).Norm() > 1e-4) {
+      message = path + ": vertex " + std::to_string(v) + " differs from the scan's: not the same mesh";
+      return false;
+    }
+  segment_of_face.assign(scan.face.size(), -1);
+  K = 0;
+  for (std::size_t f = 0; f < scan.face.size(); ++f) {
+    const double q = labelled.face[f].cQ();
+    if (!(q >= -1 && q < 1e7) || q != std::floor(q)) {
+      message = path + ": face " + std::to_string(f) + " has quality " + std::to_string(q) + ", not a segment id";
+      return false;
+    }
+    segment_of_face[f] = static_cast<int>(q);
+    K = std::max(K, segment_of_face[f] + 1);
+  }
+  return true;
+}
+
+// Reads "SEGMENT_ID TYPE" lines (type: plane, sphere, cylinder, cone, torus; any other word, e.g. other,
+// leaves the segment to fit_primitive_auto; '#' lines are comments); ids outside the segments are ignored.
+bool read_types(const std::string& path, std::vector<std::optional<primitive_edit::PrimitiveType>>& type_of_segment,
+                std::string& message)
+{
+  std::ifstream in(path);
+  if (!in) {
+    message = path + ": cannot read";
+    return false;
+  }
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#')
+      continue;
+    std::istringstream words(line);
+    long id = -1;
+    std::string name;
+    if (!(words >> id >> name)) {
+      message = path + ": not a \"SEGMENT_ID TYPE\" line: " + line;
+      return false;
+    }
+    if (id < 0 || id >= static_cast<long>(type_of_segment.size()))
+      continue;
+    for (int t = 0; t < primitive_edit::kPrimitiveTypeCount; ++t) {
+      const auto type = static_cast<primitive_edit::PrimitiveType>(t);
+      std::string type_name = primitive_edit::primitive_type_name(type);
+      std::transform(type_name.begin(), type_name.end(), type_name.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (type_name == name)
+        type_of_segment[static_cast<std::size_t>(id)] = type;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  std::string scan_path, segmented_path, fits_path, snapped_path;
+  std::string scan_path, labels_path, types_path, segmented_path, fits_path, snapped_path;
   int runs = 3;
+  primitive_edit::AutoFitOptions fit_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -65,6 +143,12 @@ int main(int argc, char** argv)
       params.normal_angle_deg = std::atof(argv[++i]);
     else if (a == "--smoothing" && has_value)
       params.smoothing_iterations = std::atoi(argv[++i]);
+    else if (a == "--fit-tolerance" && has_value)
+      fit_options.tolerance = std::atof(argv[++i]);
+    else if (a == "--labels" && has_value)
+      labels_path = argv[++i];
+    else if (a == "--types" && has_value)
+      types_path = argv[++i];
     else if (a == "--segmented" && has_value)
       segmented_path = argv[++i];
     else if (a == "--fits" && has_value)
@@ -78,9 +162,9 @@ int main(int argc, char** argv)
       break;
     }
   }
-  if (scan_path.empty()) {
-    std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--segmented OUT.ply] [--fits OUT.json] "
-                         "[--snapped OUT.ply]\n");
+  if (scan_path.empty() || !std::isfinite(fit_options.tolerance) || fit_options.tolerance < 0) {
+    std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
+                         "[--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -95,20 +179,30 @@ int main(int argc, char** argv)
   std::vector<int> segment_of_face;
   SegmentByPrimitiveGrowingReport report;
   int K = 0;
+  if (!labels_path.empty()) {
+    if (!read_labels(labels_path, m, segment_of_face, K, message)) {
+      std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+      return 1;
+    }
+    runs = 0;
+    std::printf("%s: %zu faces, %d segments read from %s\n", scan_path.c_str(), m.face.size(), K, labels_path.c_str());
+  }
   for (int r = 0; r < runs; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     K = segment_by_primitive_growing(m, params, segment_of_face, &report);
     times.push_back(seconds_since(t0));
   }
-  std::sort(times.begin(), times.end());
-  int typed = 0;
-  for (const auto& p : report.primitive_of_segment)
-    typed += p.has_value() ? 1 : 0;
-  std::printf("%s: %zu faces, %d segments (%d with a grown primitive, %d regions grown), tolerance %.4g, "
-              "roughness %.4g\n",
-              scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
-  std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", times[times.size() / 2],
-              runs, times.front(), times.back(), 1e9 * times[times.size() / 2] / double(m.face.size()));
+  if (runs > 0) {
+    std::sort(times.begin(), times.end());
+    int typed = 0;
+    for (const auto& p : report.primitive_of_segment)
+      typed += p.has_value() ? 1 : 0;
+    std::printf("%s: %zu faces, %d segments (%d with a grown primitive, %d regions grown), tolerance %.4g, "
+                "roughness %.4g\n",
+                scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
+    std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", times[times.size() / 2],
+                runs, times.front(), times.back(), 1e9 * times[times.size() / 2] / double(m.face.size()));
+  }
 
   if (!segmented_path.empty()) {
     for (std::size_t f = 0; f < m.face.size(); ++f)
@@ -117,13 +211,24 @@ int main(int argc, char** argv)
       std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", segmented_path.c_str());
   }
 
+  std::vector<std::optional<PrimitiveType>> forced_type(static_cast<std::size_t>(K));
+  if (!types_path.empty() && !read_types(types_path, forced_type, message)) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+    return 1;
+  }
   auto t0 = std::chrono::steady_clock::now();
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, K);
   std::vector<AutoFitResult> fits(samples.size());
   std::vector<std::optional<Primitive>> primitives(samples.size());
   int fitted = 0;
   for (std::size_t s = 0; s < samples.size(); ++s) {
-    fits[s] = fit_primitive_auto(samples[s].points, samples[s].normals, samples[s].weights);
+    if (forced_type[s]) {
+      fits[s].best = fit_primitive(*forced_type[s], samples[s].points, samples[s].normals, samples[s].weights,
+                                   fit_options.fit);
+      fits[s].ok = fits[s].best.ok;
+    } else {
+      fits[s] = fit_primitive_auto(samples[s].points, samples[s].normals, samples[s].weights, fit_options);
+    }
     if (fits[s].ok) {
       primitives[s] = fits[s].best.primitive;
       ++fitted;

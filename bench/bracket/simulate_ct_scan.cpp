@@ -3,8 +3,9 @@
 //   1. voxelise: grey level = share of each voxel inside the part (air 0, metal 1), by ray parity along
 //      z through the exact triangles, with exact coverage along the ray and SxS rays per voxel column;
 //   2. roughness (optional): displace space by a smooth Gaussian random vector field (std in mm,
-//      correlation length in mm), so the surface moves by a smooth random amount along its normal;
-//      then blur with a Gaussian point spread (sigma in mm);
+//      correlation length in mm), so the surface moves by a smooth random amount along its normal, or
+//      (--roughness-kind normal) move the surface along its normal by a Gaussian height field, which
+//      cannot fold at any slope; then blur with a Gaussian point spread (sigma in mm);
 //   3. add Gaussian grey-level noise, correlated over the same point spread as in a reconstructed volume
 //      (so the surface roughness does not depend on the voxel size), scaled to the requested std;
 //   4. extract the iso-surface at the threshold with vcglib's marching cubes. A threshold above 0.5
@@ -13,11 +14,12 @@
 //      reference face nearest to its barycentre, written to a text file, one integer per line in the
 //      scan's face order.
 // Input: a PLY with per-face quality = B-rep face index (make_bracket's reference.ply).
-// Cost: O(voxels * (1 + blur/voxel)) for the volume (the roughness field: O(voxels) more), O(scan faces * log) for the ground truth.
+// Cost: O(voxels * (1 + blur/voxel)) for the volume (the roughness field: O(voxels) more; along the normal,
+// a closest-point query per voxel within 4 std of the surface), O(scan faces * log) for the ground truth.
 //
-// Usage: simulate_ct_scan --in reference.ply --out scan.ply [--truth scan_truth.txt] [--preset paper|paper-bias]
-//        [--voxel MM] [--blur MM] [--noise GREY] [--threshold GREY] [--roughness MM] [--roughness-length MM]
-//        [--supersample S] [--seed N]
+// Usage: simulate_ct_scan --in reference.ply --out scan.ply [--truth scan_truth.txt]
+//        [--preset paper|paper-fine|paper-bias] [--voxel MM] [--blur MM] [--noise GREY] [--threshold GREY]
+//        [--roughness MM] [--roughness-length MM] [--roughness-kind space|normal] [--supersample S] [--seed N]
 #include "bracket_mesh.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -57,6 +59,7 @@ struct Settings
   double threshold = 0.5;  // iso level
   double roughness = 0.0;  // std of the smooth random surface displacement, mm
   double roughness_length = 1.0; // its correlation length (low-pass sigma), mm
+  bool roughness_along_normal = false; // height field along the normal (no folds) instead of a displacement of space
   int supersample = 2;     // SxS rays per voxel column
   std::uint64_t seed = 1;
 };
@@ -86,6 +89,23 @@ void apply_paper_bias_preset(Settings& s)
   s.noise = 0.05;
   s.threshold = 0.6815;
   s.roughness = 0;
+}
+
+// The same figures from fine-scale errors only, which fitting and snapping can remove: a rough surface
+// whose bumps (correlation length 0.5 mm) are far smaller than the bracket's features (holes of 2.5 mm
+// radius, fillets of 1-2 mm), so a segment's fit averages hundreds of them, plus the same point spread,
+// grey noise and unbiased threshold. At this length a displacement of space as large as the figures
+// need would fold (gradient std ~ std / length ~ 1: voids and floating blobs), so the roughness is a
+// height field along the normal, which cannot fold. See bench/bracket/README.md.
+void apply_paper_fine_preset(Settings& s)
+{
+  s.voxel = 0.155; // about 1M faces: the rough surface gives 1.7x the triangles of a smooth one
+  s.blur = 0.3;
+  s.noise = 0.05;
+  s.threshold = 0.5;
+  s.roughness = 0.64;
+  s.roughness_length = 0.5;
+  s.roughness_along_normal = true;
 }
 
 // A dense scalar volume on the sample grid origin + (i, j, k) * voxel, x fastest. It is also the
@@ -337,8 +357,9 @@ void gaussian_blur(std::vector<float>& v, const vcg::Point3i& n, double sigma)
 class DisplacementField
 {
 public:
+  // components: 3 for a vector field, 1 for a scalar one (at() then returns it in x, y = z = 0).
   bool build(const vcg::Point3d& lo, const vcg::Point3d& hi, double voxel, double std_mm, double length_mm,
-             std::uint64_t seed, std::string* error)
+             int components, std::uint64_t seed, std::string* error)
   {
     spacing_ = std::max(length_mm / 4, voxel / 2);
     const double sigma = length_mm / spacing_;
@@ -361,6 +382,7 @@ public:
     const float scale = static_cast<float>(std_mm / std::pow(k2, 1.5));
     std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
     std::normal_distribution<float> normal(0.f, 1.f);
+    v_.assign(components, {});
     for (auto& component : v_) {
       component.resize(static_cast<size_t>(cells));
       for (float& x : component)
@@ -386,7 +408,7 @@ public:
       const int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
       const double w = (dx ? f[0] : 1 - f[0]) * (dy ? f[1] : 1 - f[1]) * (dz ? f[2] : 1 - f[2]);
       const size_t i = (c[0] + dx) + static_cast<size_t>(size_[0]) * ((c[1] + dy) + static_cast<size_t>(size_[1]) * (c[2] + dz));
-      for (int a = 0; a < 3; ++a)
+      for (size_t a = 0; a < v_.size(); ++a)
         d[a] += w * v_[a][i];
     }
     return d;
@@ -396,7 +418,7 @@ private:
   vcg::Point3d origin_;
   vcg::Point3i size_;
   double spacing_ = 1;
-  std::vector<float> v_[3];
+  std::vector<std::vector<float>> v_;
 };
 
 // Resamples the volume at x + V(x) (trilinear, air outside): the part seen through the displacement.
@@ -425,6 +447,78 @@ void displace(Volume& vol, const DisplacementField& field)
         }
         dst[vol.index(i, j, k)] = static_cast<float>(g);
       }
+}
+
+// Step 2a', roughness along the normal (preset paper-fine): the part becomes {x : sd(x) < H(c(x))}, sd the
+// signed distance to the reference (negative inside), c(x) the closest reference point and H a scalar
+// Gaussian field (std in mm, clamped to 4 std) read on the reference surface. H is constant along each
+// normal line, so every line crosses the new surface exactly once: unlike a displacement of space, a
+// height field of any slope never folds into voids or floating blobs, which lets the roughness be fine
+// (a correlation length well below the features) and still large. Only voxels within 4 std + 2 voxels
+// of the surface change; their grey level becomes a one-voxel linear ramp across the new surface
+// (the partial volume of a plane). Returns the number of closest-point queries.
+long roughen_along_normal(Volume& vol, BMesh& ref, const DisplacementField& height, double std_mm)
+{
+  const vcg::Point3i n = vol.ISize();
+  const double h = vol.voxel();
+  const double limit = 4 * std_mm, band = limit + 2 * h;
+  std::vector<float>& v = vol.values();
+  // Blocks of B^3 voxels holding a partial voxel (the surface), dilated by the band: the voxels to query.
+  const int B = 8;
+  const vcg::Point3i nb((n[0] + B - 1) / B, (n[1] + B - 1) / B, (n[2] + B - 1) / B);
+  auto block = [&](int x, int y, int z) { return x + static_cast<size_t>(nb[0]) * (y + static_cast<size_t>(nb[1]) * z); };
+  std::vector<char> near(static_cast<size_t>(nb[0]) * nb[1] * nb[2], 0);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const float g = v[vol.index(i, j, k)];
+        if (g > 1e-3f && g < 1 - 1e-3f)
+          near[block(i / B, j / B, k / B)] = 1;
+      }
+  const int reach = static_cast<int>(std::ceil(band / (B * h)));
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::vector<char> src = near;
+    for (int z = 0; z < nb[2]; ++z)
+      for (int y = 0; y < nb[1]; ++y)
+        for (int x = 0; x < nb[0]; ++x) {
+          int c[3] = {x, y, z};
+          const int at = c[axis];
+          for (int d = std::max(0, at - reach); d <= std::min(nb[axis] - 1, at + reach) && !near[block(x, y, z)]; ++d) {
+            c[axis] = d;
+            near[block(x, y, z)] = src[block(c[0], c[1], c[2])];
+          }
+        }
+  }
+
+  // Queries reach up to the band from the surface: a grid finer than vcg's default (one cell per face)
+  // keeps the faces searched per query few.
+  vcg::GridStaticPtr<bracket::BFace, double> grid;
+  grid.Set(ref.face.begin(), ref.face.end(), 8 * ref.fn);
+  long queries = 0;
+  for (int bz = 0; bz < nb[2]; ++bz)
+    for (int by = 0; by < nb[1]; ++by)
+      for (int bx = 0; bx < nb[0]; ++bx) {
+        if (!near[block(bx, by, bz)])
+          continue;
+        for (int k = bz * B; k < std::min(n[2], (bz + 1) * B); ++k)
+          for (int j = by * B; j < std::min(n[1], (by + 1) * B); ++j)
+            for (int i = bx * B; i < std::min(n[0], (bx + 1) * B); ++i) {
+              const vcg::Point3d p = vol.origin() + vcg::Point3d(i, j, k) * h;
+              double dist = 0;
+              vcg::Point3d c;
+              ++queries;
+              const bracket::BFace* f = vcg::tri::GetClosestFaceBase(ref, grid, p, band, dist, c);
+              if (!f)
+                continue;
+              float& g = v[vol.index(i, j, k)];
+              // More than a voxel from the surface the voxel is all metal or air; nearer, the face's side decides.
+              const bool inside = dist > h ? g > 0.5f : (p - c).dot(f->cN()) < 0;
+              const double sd = inside ? -dist : dist;
+              const double H = std::clamp(height.at(c)[0], -limit, limit);
+              g = static_cast<float>(std::clamp(0.5 + (H - sd) / h, 0.0, 1.0));
+            }
+      }
+  return queries;
 }
 
 // Step 3: noise of the requested std, correlated over the point spread.
@@ -474,12 +568,15 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 void usage()
 {
   std::fprintf(stderr,
-               "usage: simulate_ct_scan --in REF.ply --out SCAN.ply [--truth TRUTH.txt] [--preset paper|paper-bias]\n"
-               "                        [--voxel MM] [--blur MM] [--noise GREY] [--threshold GREY]\n"
-               "                        [--roughness MM] [--roughness-length MM] [--supersample S] [--seed N]\n"
+               "usage: simulate_ct_scan --in REF.ply --out SCAN.ply [--truth TRUTH.txt]\n"
+               "                        [--preset paper|paper-fine|paper-bias] [--voxel MM] [--blur MM] [--noise GREY]\n"
+               "                        [--threshold GREY] [--roughness MM] [--roughness-length MM]\n"
+               "                        [--roughness-kind space|normal] [--supersample S] [--seed N]\n"
                "  REF.ply: closed mesh, per-face quality = B-rep face index (make_bracket's reference.ply)\n"
                "  --preset paper: the calibrated CT (voxel 0.13, blur 0.3, noise 0.05, threshold 0.5,\n"
                "                  roughness 0.58, roughness-length 1.5): local errors only\n"
+               "  --preset paper-fine: the same figures from fine-scale roughness (voxel 0.155, blur 0.3, noise 0.05,\n"
+               "                  threshold 0.5, roughness 0.64 along the normal over 0.5)\n"
                "  --preset paper-bias: the same figures from a global offset (voxel 0.115, blur 0.8, noise 0.05,\n"
                "                  threshold 0.6815): flat faces 0.38 mm in, which fitting cannot remove\n"
                "                  flags given with a preset override its values\n"
@@ -491,6 +588,9 @@ void usage()
                "  --threshold: iso level; > 0.5 shrinks the part, < 0.5 grows it (default 0.5)\n"
                "  --roughness: std of a smooth random displacement of the surface, mm (default 0)\n"
                "  --roughness-length: its correlation length (Gaussian low-pass sigma), mm (default 1)\n"
+               "  --roughness-kind: space (default) displaces space by a random vector field, which folds into\n"
+               "                  voids and blobs once std/length nears 1; normal moves the surface along its\n"
+               "                  normal by a random height field, which never folds\n"
                "  --supersample: SxS rays per voxel column (default 2)\n"
                "  --seed: noise seed (default 1)\n"
                "  TRUTH.txt: one line per scan face, in order: the B-rep face index nearest to it\n");
@@ -505,6 +605,8 @@ bool parse(int argc, char** argv, Settings& s)
         apply_paper_preset(s);
       else if (name == "paper-bias")
         apply_paper_bias_preset(s);
+      else if (name == "paper-fine")
+        apply_paper_fine_preset(s);
       else
         return false;
     }
@@ -522,6 +624,8 @@ bool parse(int argc, char** argv, Settings& s)
     else if (a == "--threshold") s.threshold = std::atof(v);
     else if (a == "--roughness") s.roughness = std::atof(v);
     else if (a == "--roughness-length") s.roughness_length = std::atof(v);
+    else if (a == "--roughness-kind" && (std::string(v) == "space" || std::string(v) == "normal"))
+      s.roughness_along_normal = std::string(v) == "normal";
     else if (a == "--supersample") s.supersample = std::atoi(v);
     else if (a == "--seed") s.seed = std::strtoull(v, nullptr, 10);
     else if (a != "--preset") return false;
@@ -575,14 +679,19 @@ int main(int argc, char** argv)
                          "(open or self-intersecting reference)\n", odd);
   const double t_vox = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
+  long queries = 0;
   if (s.roughness > 0) {
     DisplacementField field;
     std::string error;
-    if (!field.build(ref.bbox.min, ref.bbox.max, s.voxel, s.roughness, s.roughness_length, s.seed, &error)) {
+    if (!field.build(ref.bbox.min, ref.bbox.max, s.voxel, s.roughness, s.roughness_length,
+                     s.roughness_along_normal ? 1 : 3, s.seed, &error)) {
       std::fprintf(stderr, "simulate_ct_scan: %s\n", error.c_str());
       return 1;
     }
-    displace(vol, field);
+    if (s.roughness_along_normal)
+      queries = roughen_along_normal(vol, ref, field, s.roughness);
+    else
+      displace(vol, field);
   }
   const double t_rough = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
@@ -634,11 +743,11 @@ int main(int argc, char** argv)
   vcg::tri::UpdateTopology<BMesh>::FaceFace(scan);
   const int components = vcg::tri::Clean<BMesh>::CountConnectedComponents(scan);
   std::printf("simulate_ct_scan: voxel %.4g mm, blur %.4g mm, noise %.4g, threshold %.4g, roughness %.4g mm "
-              "over %.4g mm: %dx%dx%d voxels, %d vertices, %d faces, %d component(s)\n",
-              s.voxel, s.blur, s.noise, s.threshold, s.roughness, s.roughness_length, size[0], size[1], size[2],
-              scan.vn, scan.fn, components);
-  std::printf("simulate_ct_scan: times: voxelise %.2f s, roughness %.2f s, blur+noise %.2f s, marching cubes %.2f s, "
+              "over %.4g mm%s: %dx%dx%d voxels, %d vertices, %d faces, %d component(s)\n",
+              s.voxel, s.blur, s.noise, s.threshold, s.roughness, s.roughness_length,
+              s.roughness_along_normal ? " along the normal" : "", size[0], size[1], size[2], scan.vn, scan.fn, components);
+  std::printf("simulate_ct_scan: times: voxelise %.2f s, roughness %.2f s (%ld closest-point queries), blur+noise %.2f s, marching cubes %.2f s, "
               "truth %.2f s, total %.2f s\n",
-              t_vox, t_rough, t_blur, t_mc, t_truth, seconds_since(t_start));
+              t_vox, t_rough, queries, t_blur, t_mc, t_truth, seconds_since(t_start));
   return 0;
 }
