@@ -1,5 +1,6 @@
 // bench_fit_all: "Primitive: Fit All Segments" with snap on a segmented scan, as the filter runs it:
-// gather_segment_samples, fit_segments_auto (automatic type and tolerance) and snap_segments with sharp edges.
+// the scan's roughness (for the automatic tolerance), gather_segment_samples, fit_segments_auto (automatic type
+// and tolerance) and snap_segments with sharp edges.
 // Input: a PLY whose per-face quality is the segment id (bench_segment_scan --segmented, or meshlabserver's
 // -m fq after a segmentation filter). The fit is run on 1 thread (the baseline) and on all hardware threads,
 // each `--runs` times (default 5) on a fresh copy of the mesh; printed: median wall-clock times of each stage
@@ -7,6 +8,8 @@
 // Usage: bench_fit_all SEGMENTED.ply [--runs N]
 #include "bracket/bracket_mesh.h"
 
+#include "common/estimate_surface_roughness.h"
+#include "common/face_adjacency.h"
 #include "common/fit_segments_auto.h"
 #include "common/gather_segment_samples.h"
 #include "common/snap_segments.h"
@@ -62,13 +65,15 @@ int main(int argc, char** argv)
     bracket::BMesh m;
     vcg::tri::Append<bracket::BMesh, bracket::BMesh>::MeshCopy(m, original);
     auto t0 = std::chrono::steady_clock::now();
+    AutoFitOptions options;
+    options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
     const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
     gather.push_back(seconds_since(t0));
     t0 = std::chrono::steady_clock::now();
-    fit_segments_auto(samples, {}, 1);
+    fit_segments_auto(samples, options, 1);
     fit_one.push_back(seconds_since(t0));
     t0 = std::chrono::steady_clock::now();
-    const std::vector<AutoFitResult> fits = fit_segments_auto(samples, {}, hardware);
+    const std::vector<AutoFitResult> fits = fit_segments_auto(samples, options, hardware);
     fit_all.push_back(seconds_since(t0));
     std::vector<std::optional<Primitive>> primitives(fits.size());
     fitted = 0;
@@ -83,7 +88,7 @@ int main(int argc, char** argv)
   }
   std::printf("%s: %zu faces, %d segments, %d fitted; median of %d runs [s]\n", argv[1], original.face.size(), count,
               fitted, runs);
-  std::printf("gather %.3f | fit 1 thread %.3f | fit %d threads %.3f (%.2fx) | snap %.3f | "
+  std::printf("roughness + gather %.3f | fit 1 thread %.3f | fit %d threads %.3f (%.2fx) | snap %.3f | "
               "Fit All with snap (gather + fit on %d threads + snap) %.3f\n",
               median(gather), median(fit_one), hardware, median(fit_all), median(fit_one) / median(fit_all),
               median(snap), hardware, median(gather) + median(fit_all) + median(snap));

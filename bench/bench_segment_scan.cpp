@@ -6,7 +6,8 @@
 //   --segmented OUT.ply  the scan with face quality = segment id (for bench/score_segmentation.py),
 //   --fits OUT.json      the fitted primitive of each segment (score_segmentation.py's FIT_EXPORT.json),
 //   --snapped OUT.ply    the scan after snapping (for bench/bracket/measure_scan).
-// --fit-tolerance MM is the fits' RMS limit (0, the default: 1% of each segment's size, as the filter's default).
+// --fit-tolerance MM is the fits' RMS limit (0, the default: automatic as in the filter, the larger of 1% of each
+// segment's size and 3x the scan's roughness, estimate_surface_roughness.h).
 // --labels SEGMENTED.ply skips the segmentation and fits/snaps the segments given as face quality of that
 // PLY (the same scan, e.g. bench/true_segmentation.py's true surfaces: the ceiling of fit-and-snap).
 // --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
@@ -16,6 +17,7 @@
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
+#include "common/estimate_surface_roughness.h"
 #include "common/face_adjacency.h"
 #include "common/fit_primitive.h"
 #include "common/fit_primitive_auto.h"
@@ -217,6 +219,8 @@ int main(int argc, char** argv)
     return 1;
   }
   auto t0 = std::chrono::steady_clock::now();
+  if (fit_options.tolerance == 0)
+    fit_options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, K);
   std::vector<AutoFitResult> fits(samples.size());
   std::vector<std::optional<Primitive>> primitives(samples.size());

@@ -1,8 +1,9 @@
 // fit_primitive_auto.h: fit every primitive type and choose the one the data is.
 //
 // Input:  points N x 3, normals N x 3 or empty, weights N or empty (= all 1), options: tolerance
-//         (max acceptable RMS in mesh units; <= 0: 1% of the bounding-box diagonal of the points of
-//         positive weight) and the per-fit options.
+//         (max acceptable RMS in mesh units; <= 0: the larger of 1% of the bounding-box diagonal of the
+//         points of positive weight and 3 x options.roughness, the data's noise RMS if known) and the
+//         per-fit options.
 // Output: AutoFitResult: candidates = the fit of each type, in PrimitiveType order; best = the chosen
 //         one; ok == false when the input is bad or nothing fits within the tolerance (free-form; best
 //         is then the best-scoring fit, for information).
@@ -12,8 +13,9 @@
 //         that large because a scan's error is spatially correlated (roughness, waviness): a richer
 //         surface bends to follow it and gains far more than on independent noise. On the bundled CT
 //         scan's true segments, 0.1 per parameter chose the right type for 71% of the area, 0.5 for
-//         78% (bench_segment_scan --labels). The floor makes exact data choose the simplest exact type. Degenerate fits are not eligible: a sphere
-//         whose cap sags less than the tolerance over the data (a plane), a cone whose radius
+//         78% (bench_segment_scan --labels). The floor makes exact data choose the simplest exact
+//         type. Degenerate fits are not eligible: a sphere or cylinder that sags less than the
+//         tolerance over the data (a plane), a cone whose radius
 //         changes by less than the tolerance along the data (a cylinder), a torus whose major radius
 //         exceeds 100 diagonals (a cylinder). Candidates must have rms <= tolerance.
 // Speed:  with more than kAutoFitScreenPoints (300) points the candidates are fitted on an evenly
@@ -39,7 +41,9 @@ namespace primitive_edit {
 
 struct AutoFitOptions
 {
-  double tolerance = 0;  // max acceptable RMS in mesh units; <= 0: 1% of the data's bounding-box diagonal
+  double tolerance = 0;  // max acceptable RMS in mesh units; <= 0: automatic (see roughness)
+  double roughness = 0;  // the data's noise RMS (estimate_surface_roughness.h), or 0 if unknown: the automatic
+                         // tolerance is max(1% of the bounding-box diagonal, 3 x roughness)
   FitOptions fit;
 };
 
@@ -88,7 +92,9 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     out.message = "all points coincide";
     return out;
   }
-  const double tolerance = options.tolerance > 0 ? options.tolerance : 0.01 * diagonal;
+  // A rough scan's segments deviate from their primitive by its roughness whatever their size.
+  const double tolerance = options.tolerance > 0 ? options.tolerance
+                                                 : std::max(0.01 * diagonal, 3.0 * std::max(0.0, options.roughness));
   const FitSample s = fit_subsample(points, normals, weights, kAutoFitScreenPoints);
   FitOptions screen_options = options.fit;
   screen_options.max_iterations = std::min(screen_options.max_iterations, 20);
@@ -106,7 +112,7 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     const double score = std::max(c.rms, 1e-6 * diagonal) * (1.0 + 0.5 * primitive_degrees_of_freedom(type));
     const Primitive& p = c.primitive;
     bool eligible = c.rms <= tolerance;
-    if (type == PrimitiveType::Sphere)
+    if (type == PrimitiveType::Sphere || type == PrimitiveType::Cylinder)
       eligible = eligible && p.radius - std::sqrt(std::max(0.0, p.radius * p.radius - 0.25 * diagonal * diagonal)) >
                                  tolerance;
     if (type == PrimitiveType::Cone)

@@ -2,6 +2,8 @@
 
 #include "common/count_segments.h"
 #include "common/describe_primitive.h"
+#include "common/estimate_surface_roughness.h"
+#include "common/face_adjacency.h"
 #include "common/fit_primitive.h"
 #include "common/fit_primitive_auto.h"
 #include "common/fit_segments_auto.h"
@@ -156,7 +158,8 @@ void FilterPrimitiveFitPlugin::initParameterSet(QAction* action, MeshModel&, Ric
   if (id == PRIMITIVE_FIT_ALL_SEGMENTS) {
     parlst.addParam(RichFloat("Tolerance", 0, "Fit Tolerance",
                               "Largest RMS residual, in mesh units, for a segment to count as a primitive; "
-                              "0 uses 1% of each segment's size."));
+                              "0 uses the larger of 1% of each segment's size and 3 times the scan's "
+                              "roughness (the RMS of the surface about local planes, estimated here)."));
     parlst.addParam(RichBool("Snap", true, "Snap Segments",
                              "Move every fitted segment onto its primitive."));
     parlst.addParam(RichString("Export", "", "Export JSON",
@@ -312,6 +315,12 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
   AutoFitOptions options;
   options.tolerance = tolerance;
+  if (tolerance == 0) {
+    options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
+    Log("%s: estimated surface roughness %.4g (RMS about local planes): segments within %.4g RMS of a primitive "
+        "(or 1%% of their size) are fitted.",
+        qUtf8Printable(name), options.roughness, 3 * options.roughness);
+  }
   const std::vector<AutoFitResult> fits = fit_segments_auto(samples, options, 0, [&](int done, int total) {
     if (cb != nullptr)
       cb(snap ? 80 * done / total : 100 * done / total, "Fitting primitives");

@@ -1,0 +1,89 @@
+// estimate_surface_roughness: zero on an exact plane, proportional to the noise of a noisy one, zero on bad
+// input; and the automatic tolerance of fit_primitive_auto that uses it: a rough segment is a primitive.
+#include "test_mesh.h"
+#include "test_fit_data.h"
+
+#include "common/estimate_surface_roughness.h"
+#include "common/face_adjacency.h"
+#include "common/fit_primitive_auto.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace primitive_edit;
+
+namespace {
+
+// A 100 x 100 grid of unit squares in z = 0, each vertex moved along z by Gaussian noise of std sigma.
+void make_noisy_grid(test_mesh::TMesh& m, double sigma, unsigned seed)
+{
+  constexpr int n = 100;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  auto vi = vcg::tri::Allocator<test_mesh::TMesh>::AddVertices(m, size_t(n + 1) * size_t(n + 1));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j, ++vi)
+      vi->P() = test_mesh::TMesh::CoordType(i, j, sigma > 0 ? noise(rng) : 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      auto* a = &m.vert[size_t(i) * (n + 1) + size_t(j)];
+      auto* b = &m.vert[size_t(i + 1) * (n + 1) + size_t(j)];
+      auto* c = &m.vert[size_t(i + 1) * (n + 1) + size_t(j + 1)];
+      auto* d = &m.vert[size_t(i) * (n + 1) + size_t(j + 1)];
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, a, b, c);
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, a, c, d);
+    }
+}
+
+double roughness_of_grid(double sigma, unsigned seed)
+{
+  test_mesh::TMesh m;
+  make_noisy_grid(m, sigma, seed);
+  return estimate_surface_roughness(m, build_face_adjacency(m));
+}
+
+} // namespace
+
+TEST(EstimateSurfaceRoughness, ExactPlaneIsSmooth)
+{
+  EXPECT_LT(roughness_of_grid(0.0, 1), 1e-12);
+}
+
+TEST(EstimateSurfaceRoughness, NoisyPlaneGivesTheNoiseOfItsFaceCentroids)
+{
+  // A centroid averages three vertices: its noise is sigma / sqrt(3) about the plane.
+  const double sigma = 0.05;
+  const double r = roughness_of_grid(sigma, 2);
+  EXPECT_GT(r, 0.8 * sigma / std::sqrt(3.0));
+  EXPECT_LT(r, 1.2 * sigma / std::sqrt(3.0));
+  EXPECT_NEAR(roughness_of_grid(2 * sigma, 3) / r, 2.0, 0.2);
+}
+
+TEST(EstimateSurfaceRoughness, BadInputGivesZero)
+{
+  test_mesh::TMesh empty;
+  EXPECT_EQ(estimate_surface_roughness(empty, build_face_adjacency(empty)), 0.0);
+  test_mesh::TMesh m;
+  make_noisy_grid(m, 0.05, 4);
+  EXPECT_EQ(estimate_surface_roughness(m, FaceAdjacency()), 0.0);  // adjacency of another mesh
+  for (auto& v : m.vert)
+    v.P()[2] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(estimate_surface_roughness(m, build_face_adjacency(m)), 0.0);
+}
+
+TEST(AutoFitTolerance, ARoughSegmentIsAPrimitiveWhenTheRoughnessIsKnown)
+{
+  // A plane patch of size 2 with noise of 5% of its size: over the default 1% of the size it is free-form,
+  // within 3x a roughness of that noise it is a plane.
+  using namespace test_fit;
+  Sample s = sample_primitive(make_plane({0, 0, 0}, {0, 0, 1}), Patch(), 2000, 5);
+  add_noise(&s, 0.1, 2.0, 6);
+  const AutoFitResult unknown = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
+  EXPECT_FALSE(unknown.ok);
+  AutoFitOptions options;
+  options.roughness = 0.1;
+  const AutoFitResult known = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options);
+  ASSERT_TRUE(known.ok) << known.message;
+  EXPECT_EQ(known.best.primitive.type, PrimitiveType::Plane);
+}
