@@ -8,7 +8,8 @@
 //                            median plane-fit RMS of small patches spread over the mesh (at least 1/20 of
 //                            the mean edge length, so that exact data still gets a positive tolerance);
 //         normal_angle_deg   ...and when its smoothed normal is within this angle of the primitive's normal
-//                            there (either orientation: holes and bosses alike);
+//                            there (either orientation: holes and bosses alike); the allowed angle grows
+//                            linearly to twice this as the distance goes to 0 (see below);
 //         seed_patch_faces   size of the patch a seed is fitted on;
 //         min_region_faces   grown regions smaller than this are dissolved and their faces handed to the
 //                            neighbours (<= 0: automatic, = seed_patch_faces);
@@ -16,20 +17,34 @@
 // Method: 1. smoothed face normals; seeds ordered by flatness (the normal's variation over the 1-ring).
 //         2. from the flattest unassigned seed: a patch of seed_patch_faces faces (BFS), fitted by a plane,
 //            else by fit_primitive_auto; a patch that fits nothing marks all its faces as failed seeds.
-//            The region grows by BFS over unassigned faces that agree with the primitive (distance and
-//            normal); the primitive is refined on a subsample (refine_primitive) each time the region has
-//            grown by half; when growth stops, fit_primitive_auto on the region plus a band of a few rings
-//            around it may change the type (a plane patch that is part of a large cylinder) and growth
-//            resumes.
+//            The region grows by BFS over unassigned faces that agree with the primitive (distance, and
+//            normal with the angle widened near the primitive: on a rough scan, e.g. CT with a smooth
+//            random displacement, the local slope of a face that lies on the surface is noise, while a
+//            face of another surface meeting it at an edge is near it only within a band narrower than
+//            the tolerance); the primitive is refined on a subsample (refine_primitive) each time the
+//            region has grown by half; when growth stops, fit_primitive_auto on the region plus a band of
+//            a few rings around it may change the type (a plane patch that is part of a large cylinder)
+//            and growth resumes.
 //         3. grown regions smaller than min_region_faces, or curved more tightly than a seed patch is wide
-//            (an edge rounded by the scanner's blur, not a CAD surface), are dissolved; adjacent regions
-//            whose union fits one primitive of their type are merged.
-//         4. the faces left over (blurred edges, fillets smaller than a patch, failed seeds) go, by a
-//            best-first flood (priority = distance to the region's primitive), to the adjacent region
-//            whose primitive is nearest: a blurred edge between two planes is split at their bisector.
-//            Then a few passes of boundary relaxation move each border face to the neighbouring region
-//            whose primitive explains it best (growth within the tolerance lets a plane take the tangent
-//            start of a fillet). Components with no region at all become one segment each.
+//            (an edge rounded by the scanner's blur, not a CAD surface), are dissolved.
+//            Adjacent regions are merged, longest borders first and in rounds until nothing merges, when
+//            one primitive of any type (each region's primitive refined on the union; a torus only for two
+//            tori, as a torus also fits a fillet with the faces it joins) agrees with each region over at
+//            least half of its area. The share is measured per region, so that a small region of another
+//            surface is not outvoted, and against the scan's own roughness: faces of one rough surface
+//            miss the tests here and there, those of a surface meeting it at an edge almost all miss.
+//            Then, smallest first, a region that agrees over half its area with a larger neighbour's
+//            primitive at twice the tolerance (a crest or trough of the roughness, parallel to the
+//            surface but beyond the tolerance) is dissolved.
+//         4. the faces left over (blurred edges, fillets smaller than a patch, failed seeds, dissolved
+//            regions) go, by a best-first flood (priority = distance to the region's primitive), to the
+//            adjacent region whose primitive is nearest: a blurred edge between two planes is split at
+//            their bisector. Then a few passes of boundary relaxation move each border face to the
+//            neighbouring region whose primitive explains it best (growth within the tolerance lets a
+//            plane take the tangent start of a fillet). Components with no region at all become one
+//            segment each.
+//         On a scan whose roughness is comparable to the size of its small features (fillets of radius
+//         about the tolerance), those features go to the surfaces around them, split at the nearest one.
 // Output: segment_of_face (indexed by vcg::tri::Index): dense ids 0..K-1, -1 for deleted faces. Returns K.
 //         The optional report holds the tolerance used, the roughness estimate and each segment's
 //         primitive (std::nullopt for a segment no primitive was grown for), in the form snap_segments.h
@@ -38,12 +53,15 @@
 //         final flood gives them the label of a neighbour.
 // Complexity: O(F log F) time (seed sort and the final priority flood); growth visits each face O(1) times
 //         per refit of its region, and refits happen at geometric size steps on subsamples of at most
-//         kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). O(F) memory.
+//         kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). Merging refits
+//         each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each region, per
+//         round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
 #include "common/closest_point_on_primitive.h"
 #include "common/compact_segment_ids.h"
+#include "common/estimate_surface_roughness.h"
 #include "common/face_adjacency.h"
 #include "common/fit_plane.h"
 #include "common/fit_primitive_auto.h"
@@ -91,6 +109,8 @@ constexpr int kFitSampleCount = 600; // faces a refit uses at most
 constexpr int kBandRings = 3;        // rings around a stopped region that a type change must explain
 constexpr int kRoughnessPatchDivisor = 200; // roughness patches hold 1/200 of the faces
 constexpr int kRelaxPasses = 20;     // boundary relaxation passes at most
+constexpr int kShareSampleCount = 2000; // faces an agreeing share is estimated on at most
+constexpr double kMergeShare = 0.5;  // share of each region that must agree with the union's primitive
 
 struct Geometry
 {
@@ -144,21 +164,28 @@ inline void face_samples(const Geometry& g, const std::vector<int>& faces, int m
   }
 }
 
-// Does face f agree with the primitive: centroid within tol, normal within the angle (either side)?
-inline bool agrees(const Geometry& g, const Primitive& prim, int f, double tol, double min_cos)
+// Does face f agree with the primitive: centroid within tol, normal within the angle (either side)? The
+// allowed angle grows linearly to twice `angle` as the distance goes to 0: on a rough scan the surface's
+// local slope is noise where the face lies on the primitive, while a face of another surface that meets it
+// at an edge is near it only on a band narrower than tol.
+inline bool agrees(const Geometry& g, const Primitive& prim, int f, double tol, double angle)
 {
   const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
-  return std::abs(pr.signed_distance) <= tol && std::abs(pr.normal.dot(g.normal[std::size_t(f)])) >= min_cos;
+  const double d = std::abs(pr.signed_distance);
+  if (!(d <= tol))
+    return false;
+  const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+  return std::acos(c) <= angle * (2.0 - d / tol);
 }
 
 // Share of `faces` (by area) that agree with the primitive.
 inline double agreeing_share(const Geometry& g, const Primitive& prim, const std::vector<int>& faces, double tol,
-                             double min_cos)
+                             double angle)
 {
   double in = 0, all = 0;
   for (int f : faces) {
     all += g.area[std::size_t(f)];
-    if (agrees(g, prim, f, tol, min_cos))
+    if (agrees(g, prim, f, tol, angle))
       in += g.area[std::size_t(f)];
   }
   return all > 0 ? in / all : 0.0;
@@ -187,49 +214,10 @@ void bfs_patch(const FaceAdjacency& adj, const std::vector<int>& starts, std::si
   }
 }
 
-// RMS of the face centroids about their weighted PCA plane.
-inline double plane_rms(const Geometry& g, const std::vector<int>& faces)
-{
-  Eigen::MatrixX3d points, normals;
-  Eigen::VectorXd weights;
-  face_samples(g, faces, int(faces.size()), points, normals, weights);
-  const WeightedPca pca = weighted_pca(points, weights);
-  return pca.ok ? std::sqrt(std::max(0.0, pca.eigenvalues[0])) : std::numeric_limits<double>::infinity();
-}
-
-// The surface roughness: median plane-fit RMS of patches around up to 400 evenly spread faces. Most of a
-// scan is smooth at the scale of a patch, so the median is the noise rather than the curvature.
-inline double estimate_roughness(const Geometry& g, const FaceAdjacency& adj, int patch_faces,
-                                 std::vector<int>& stamp, int& mark)
-{
-  const std::size_t n = g.valid.size();
-  std::vector<int> valid_faces;
-  for (std::size_t f = 0; f < n; ++f)
-    if (g.valid[f])
-      valid_faces.push_back(int(f));
-  const std::size_t samples = std::min<std::size_t>(400, valid_faces.size());
-  std::vector<double> rms;
-  std::vector<int> patch;
-  for (std::size_t i = 0; i < samples; ++i) {
-    const int seed = valid_faces[(i * valid_faces.size()) / samples];
-    bfs_patch(adj, {seed}, std::size_t(patch_faces), [&](int f) { return g.valid[std::size_t(f)] != 0; }, stamp,
-              ++mark, patch);
-    if (int(patch.size()) >= std::max(3, patch_faces / 2)) {
-      const double r = plane_rms(g, patch);
-      if (std::isfinite(r))
-        rms.push_back(r);
-    }
-  }
-  if (rms.empty())
-    return 0.0;
-  std::nth_element(rms.begin(), rms.begin() + std::ptrdiff_t(rms.size() / 2), rms.end());
-  return rms[rms.size() / 2];
-}
-
 // A primitive for the faces: refined from `start` when given, else fitted (plane first, then any type).
 // Accepted when the faces agree with it over at least `share` of their area.
 inline std::optional<Primitive> fit_faces(const Geometry& g, const std::vector<int>& faces, const Primitive* start,
-                                          double tol, double min_cos, double share)
+                                          double tol, double angle, double share)
 {
   Eigen::MatrixX3d points, normals;
   Eigen::VectorXd weights;
@@ -237,7 +225,7 @@ inline std::optional<Primitive> fit_faces(const Geometry& g, const std::vector<i
   if (points.rows() < 3)
     return std::nullopt;
   auto accept = [&](const FitResult& r) {
-    return r.ok && primitive_is_valid(r.primitive) && agreeing_share(g, r.primitive, faces, tol, min_cos) >= share;
+    return r.ok && primitive_is_valid(r.primitive) && agreeing_share(g, r.primitive, faces, tol, angle) >= share;
   };
   if (start) {
     FitOptions fast;
@@ -291,6 +279,69 @@ inline double curvature_radius(const Primitive& p)
   }
 }
 
+// Share (by area) of `faces` that agree with the primitive, on at most kShareSampleCount evenly strided faces.
+inline double sampled_share(const Geometry& g, const Primitive& prim, const std::vector<int>& faces, double tol,
+                            double angle)
+{
+  const std::size_t n = faces.size();
+  const std::size_t count = std::min<std::size_t>(n, kShareSampleCount);
+  double in = 0, all = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int f = faces[count == n ? i : (i * n) / count];
+    all += g.area[std::size_t(f)];
+    if (agrees(g, prim, f, tol, angle))
+      in += g.area[std::size_t(f)];
+  }
+  return all > 0 ? in / all : 0.0;
+}
+
+// A primitive for the union of two adjacent regions that each of them agrees with over at least kMergeShare
+// of its area, or nullopt. A region's agreeing share measures the union's fit against the scan's own
+// roughness (faces of a rough surface miss the tolerance or the angle here and there, those of a
+// surface meeting it at an edge almost all miss), and is not diluted when one region is much smaller.
+// Tried: each region's primitive refined on the union, so the types may differ (a piece of a wavy plane
+// that growth fitted with a torus joins the plane), except that a torus is only tried for two tori: it
+// has the freedom to also fit a fillet with the faces it joins. The candidate whose worse region agrees
+// most wins.
+inline std::optional<Primitive> merged_primitive(const Geometry& g, const std::vector<int>& fa, const Primitive& pa,
+                                                 const std::vector<int>& fb, const Primitive& pb,
+                                                 const std::vector<int>& both, double tol, double angle,
+                                                 double min_radius)
+{
+  Eigen::MatrixX3d points, normals;
+  Eigen::VectorXd weights;
+  face_samples(g, both, kFitSampleCount, points, normals, weights);
+  if (points.rows() < 3)
+    return std::nullopt;
+  std::optional<Primitive> best;
+  double best_share = kMergeShare;
+  const double diagonal = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+  auto consider = [&](FitResult r) {
+    // Refined on a wavy union, a sphere or cylinder may flatten out to a huge radius: within the tolerance
+    // it is a plane, and is reported as one (as fit_primitive_auto would choose).
+    const bool curved = r.primitive.type == PrimitiveType::Sphere || r.primitive.type == PrimitiveType::Cylinder;
+    if (r.ok && curved &&
+        r.primitive.radius - std::sqrt(std::max(0.0, r.primitive.radius * r.primitive.radius - 0.25 * diagonal * diagonal)) <=
+            tol)
+      r = fit_plane(points, normals, weights);
+    if (!r.ok || !primitive_is_valid(r.primitive) || curvature_radius(r.primitive) < min_radius)
+      return;
+    const double share = std::min(sampled_share(g, r.primitive, fa, tol, angle),
+                                  sampled_share(g, r.primitive, fb, tol, angle));
+    if (share >= best_share) {
+      best = r.primitive;
+      best_share = share;
+    }
+  };
+  FitOptions fast;
+  fast.max_iterations = 10;
+  if (pa.type != PrimitiveType::Torus || pb.type == PrimitiveType::Torus)
+    consider(refine_primitive(pa, points, weights, fast));
+  if (pb.type != pa.type && pb.type != PrimitiveType::Torus)
+    consider(refine_primitive(pb, points, weights, fast));
+  return best;
+}
+
 inline int find_root(std::vector<int>& parent, int s)
 {
   while (parent[std::size_t(s)] != s) {
@@ -320,10 +371,10 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   const Geometry g = face_geometry(m, adj, params.smoothing_iterations);
   const int patch_faces = std::max(8, params.seed_patch_faces);
   const int min_faces = params.min_region_faces > 0 ? params.min_region_faces : patch_faces;
-  const double angle = std::isfinite(params.normal_angle_deg)
-                           ? std::min(std::max(params.normal_angle_deg, 1.0), 89.0)
-                           : SegmentByPrimitiveGrowingParams().normal_angle_deg;
-  const double min_cos = std::cos(angle * (3.14159265358979323846 / 180.0));
+  const double angle_deg = std::isfinite(params.normal_angle_deg)
+                               ? std::min(std::max(params.normal_angle_deg, 1.0), 89.0)
+                               : SegmentByPrimitiveGrowingParams().normal_angle_deg;
+  const double angle = angle_deg * (3.14159265358979323846 / 180.0);
 
   std::vector<int> stamp(std::size_t(face_count), 0);
   int mark = 0;
@@ -343,7 +394,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   // Roughness is measured on patches of a fixed share of the surface, so that the estimate does not depend
   // on the resolution and sees noise that is correlated over more than a seed patch (CT scans).
   const double roughness =
-      estimate_roughness(g, adj, std::max(patch_faces, edge_count / kRoughnessPatchDivisor), stamp, mark);
+      estimate_surface_roughness(m, adj, std::max(patch_faces, edge_count / kRoughnessPatchDivisor));
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   if (!std::isfinite(tol) || !(tol > 0))
     tol = 0.0;
@@ -368,7 +419,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
     bfs_patch(adj, {seed}, std::size_t(patch_faces), unassigned, stamp, ++mark, patch);
     std::optional<Primitive> prim;
     if (int(patch.size()) >= patch_faces / 2)
-      prim = fit_faces(g, patch, nullptr, tol, min_cos, 0.9);
+      prim = fit_faces(g, patch, nullptr, tol, angle, 0.9);
     if (!prim) {
       for (int f : patch)
         failed[std::size_t(f)] = 1;
@@ -390,7 +441,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
           if (stamp[std::size_t(h)] == grow_mark || !unassigned(h))
             continue;
           stamp[std::size_t(h)] = grow_mark;
-          if (!agrees(g, *prim, h, tol, min_cos))
+          if (!agrees(g, *prim, h, tol, angle))
             continue;
           label[std::size_t(h)] = id;
           region.push_back(h);
@@ -401,7 +452,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       }
       if (region.size() >= fitted_size + fitted_size / 2) {
         fitted_size = region.size();
-        if (const std::optional<Primitive> refined = fit_faces(g, region, &*prim, tol, min_cos, 0.9))
+        if (const std::optional<Primitive> refined = fit_faces(g, region, &*prim, tol, angle, 0.9))
           prim = refined;
         continue;
       }
@@ -427,7 +478,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       }
       if (band.size() == inner)
         break;
-      std::optional<Primitive> wider = fit_faces(g, band, nullptr, tol, min_cos, 0.95);
+      std::optional<Primitive> wider = fit_faces(g, band, nullptr, tol, angle, 0.95);
       if (!wider || wider->type == prim->type)
         break;
       prim = wider;
@@ -445,7 +496,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   }
   const int grown = int(prim_of_region.size());
 
-  // Merge adjacent regions whose union fits one primitive, longest borders first.
+  // Merge adjacent regions whose union fits one primitive (merged_primitive), longest borders first.
   if (cb)
     cb(70, "Merging regions");
   std::vector<std::tuple<int, int, int>> borders; // (-shared edges, a, b), a < b
@@ -474,29 +525,67 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   std::vector<int> parent(static_cast<std::size_t>(grown));
   for (int r = 0; r < grown; ++r)
     parent[std::size_t(r)] = r;
+  // Rounds until nothing merges; after the first, only pairs with a region that merged in the round before.
+  std::vector<int> merged_in(static_cast<std::size_t>(grown), 0);
   std::vector<int> both;
-  for (const auto& border : borders) {
-    const int a = find_root(parent, std::get<1>(border));
-    const int b = find_root(parent, std::get<2>(border));
-    if (a == b || prim_of_region[std::size_t(a)].type != prim_of_region[std::size_t(b)].type)
-      continue;
-    const std::vector<int>& fa = faces_of_region[std::size_t(a)];
-    const std::vector<int>& fb = faces_of_region[std::size_t(b)];
-    const int big = fa.size() >= fb.size() ? a : b;
-    both = fa;
-    both.insert(both.end(), fb.begin(), fb.end());
-    const std::optional<Primitive> joint = fit_faces(g, both, &prim_of_region[std::size_t(big)], tol, min_cos, 0.95);
-    if (!joint)
-      continue;
-    const int keep = std::min(a, b), gone = std::max(a, b);
-    parent[std::size_t(gone)] = keep;
-    prim_of_region[std::size_t(keep)] = *joint;
-    faces_of_region[std::size_t(keep)].swap(both);
-    std::vector<int>().swap(faces_of_region[std::size_t(gone)]);
+  for (int round = 1, merges = 1; merges > 0; ++round) {
+    merges = 0;
+    for (const auto& border : borders) {
+      const int a = find_root(parent, std::get<1>(border));
+      const int b = find_root(parent, std::get<2>(border));
+      if (a == b || (round > 1 && merged_in[std::size_t(a)] != round - 1 && merged_in[std::size_t(b)] != round - 1))
+        continue;
+      const std::vector<int>& fa = faces_of_region[std::size_t(a)];
+      const std::vector<int>& fb = faces_of_region[std::size_t(b)];
+      both = fa;
+      both.insert(both.end(), fb.begin(), fb.end());
+      const std::optional<Primitive> joint = merged_primitive(
+          g, fa, prim_of_region[std::size_t(a)], fb, prim_of_region[std::size_t(b)], both, tol, angle, patch_radius);
+      if (!joint)
+        continue;
+      const int keep = std::min(a, b), gone = std::max(a, b);
+      parent[std::size_t(gone)] = keep;
+      prim_of_region[std::size_t(keep)] = *joint;
+      faces_of_region[std::size_t(keep)].swap(both);
+      std::vector<int>().swap(faces_of_region[std::size_t(gone)]);
+      merged_in[std::size_t(keep)] = round;
+      ++merges;
+    }
   }
   for (int& l : label)
     if (l >= 0)
       l = find_root(parent, l);
+
+  // A region that agrees with a larger neighbour's primitive at twice the tolerance over half its area is a
+  // crest or trough of that surface's roughness: it is dissolved, and the flood below hands its faces to
+  // the nearest primitives. Smallest first.
+  std::vector<int> by_size;
+  for (int r = 0; r < grown; ++r)
+    if (!faces_of_region[std::size_t(r)].empty())
+      by_size.push_back(r);
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
+    return faces_of_region[std::size_t(a)].size() < faces_of_region[std::size_t(b)].size();
+  });
+  std::vector<int> neighbours;
+  for (int r : by_size) {
+    const std::vector<int>& faces = faces_of_region[std::size_t(r)];
+    neighbours.clear();
+    for (int f : faces)
+      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
+        const int q = label[std::size_t(adj.neighbour[std::size_t(k)])];
+        if (q >= 0 && q != r && faces_of_region[std::size_t(q)].size() > faces.size())
+          neighbours.push_back(q);
+      }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    for (int q : neighbours)
+      if (sampled_share(g, prim_of_region[std::size_t(q)], faces, 2.0 * tol, angle) >= kMergeShare) {
+        for (int f : faces)
+          label[std::size_t(f)] = -1;
+        std::vector<int>().swap(faces_of_region[std::size_t(r)]);
+        break;
+      }
+  }
 
   // Best-first flood of the leftover faces from the regions, nearest primitive first.
   if (cb)
