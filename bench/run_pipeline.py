@@ -263,7 +263,8 @@ def main():
     p.add_argument("--samples", type=int, default=1000000)
     p.add_argument("--tolerance", type=float, default=0.42)
     p.add_argument("--fit-tolerance", type=float, default=0.0,
-                   help="Fit All Segments' RMS limit in mm (0: 1%% of each segment's size)")
+                   help="Fit All Segments' RMS limit in mm (0: automatic, the larger of 1%% of each segment's size "
+                   "and 3x the scan's roughness)")
     p.add_argument("--segment", help="segmentation filter (default: the best available: %s)" % " or ".join(PREFERRED))
     p.add_argument("--segment-param", action="append", default=[], metavar="NAME=VALUE",
                    help="a parameter of the segmentation filter (repeatable); Name:RichType=Value for a "
