@@ -234,7 +234,10 @@ bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParamet
   const SegmentSamples samples = std::move(gather_segment_samples(m, labels, target + 1)[size_t(target)]);
   FitResult fit;
   if (type_index == 0) {
-    const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights);
+    // As in Fit All: a segment of a rough scan is a primitive within the scan's roughness.
+    AutoFitOptions options;
+    options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
+    const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights, options);
     if (!automatic.ok)
       return fail(name + ": " + what + (segment == -1 ? " fit" : " fits") + " no primitive: " +
                   QString::fromStdString(automatic.message));
