@@ -1,9 +1,10 @@
 // estimate_surface_roughness.h: a scan's noise level, the RMS of its surface about local planes.
 //
-// Input:  a vcg triangle mesh, its FaceAdjacency (face_adjacency.h), and the patch size in faces
-//         (<= 0: automatic, max(60, F / 200): a fixed share of the surface, so that the estimate does not
-//         depend on the resolution and sees noise correlated over more than a few triangles, as a CT
-//         scan's is).
+// Input:  a vcg triangle mesh, or its face centroids and areas (face_centroids_and_areas.h; area <= 0: the
+//         face takes no part) for a caller that has them already; its FaceAdjacency (face_adjacency.h); and
+//         the patch size in faces (<= 0: automatic, max(60, F / 200): a fixed share of the surface, so that
+//         the estimate does not depend on the resolution and sees noise correlated over more than a few
+//         triangles, as a CT scan's is).
 // Output: the median, over patches grown breadth-first around up to 400 evenly spread faces, of the RMS
 //         distance of the patch's face centroids (weighted by area) from their least-squares plane. Most of
 //         a scan is smooth at the scale of a patch, so the median is the noise rather than the curvature.
@@ -14,10 +15,10 @@
 #define PRIMITIVE_EDIT_ESTIMATE_SURFACE_ROUGHNESS_H
 
 #include "common/face_adjacency.h"
+#include "common/face_centroids_and_areas.h"
 #include "common/weighted_pca.h"
 
 #include <Eigen/Core>
-#include <vcg/complex/complex.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,29 +26,16 @@
 
 namespace primitive_edit {
 
-template <class MeshType>
-double estimate_surface_roughness(const MeshType& m, const FaceAdjacency& adj, int patch_faces = 0)
+inline double estimate_surface_roughness(const std::vector<Eigen::Vector3d>& centroid, const std::vector<double>& area,
+                                         const FaceAdjacency& adj, int patch_faces = 0)
 {
-  const std::size_t n = m.face.size();
-  if (adj.face_count() != int(n) || n == 0)
+  const std::size_t n = centroid.size();
+  if (area.size() != n || adj.face_count() != int(n) || n == 0)
     return 0.0;
-  std::vector<Eigen::Vector3d> centroid(n);
-  std::vector<double> area(n, 0.0);
   std::vector<int> usable_faces;
-  for (std::size_t f = 0; f < n; ++f) {
-    const auto& face = m.face[f];
-    if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)
-      continue;
-    Eigen::Vector3d p[3];
-    for (int k = 0; k < 3; ++k)
-      p[k] = Eigen::Vector3d(double(face.cP(k)[0]), double(face.cP(k)[1]), double(face.cP(k)[2]));
-    const double a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    centroid[f] = (p[0] + p[1] + p[2]) / 3.0;
-    if (std::isfinite(a) && a > 0 && centroid[f].allFinite()) {
-      area[f] = a;
+  for (std::size_t f = 0; f < n; ++f)
+    if (area[f] > 0)
       usable_faces.push_back(int(f));
-    }
-  }
   if (patch_faces <= 0)
     patch_faces = std::max(60, int(usable_faces.size() / 200));
 
@@ -85,6 +73,13 @@ double estimate_surface_roughness(const MeshType& m, const FaceAdjacency& adj, i
     return 0.0;
   std::nth_element(rms.begin(), rms.begin() + std::ptrdiff_t(rms.size() / 2), rms.end());
   return rms[rms.size() / 2];
+}
+
+template <class MeshType>
+double estimate_surface_roughness(const MeshType& m, const FaceAdjacency& adj, int patch_faces = 0)
+{
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  return estimate_surface_roughness(faces.centroid, faces.area, adj, patch_faces);
 }
 
 } // namespace primitive_edit

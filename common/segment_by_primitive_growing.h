@@ -63,6 +63,7 @@
 #include "common/compact_segment_ids.h"
 #include "common/estimate_surface_roughness.h"
 #include "common/face_adjacency.h"
+#include "common/face_centroids_and_areas.h"
 #include "common/fit_plane.h"
 #include "common/fit_primitive_auto.h"
 #include "common/primitive.h"
@@ -126,23 +127,16 @@ Geometry face_geometry(const MeshType& m, const FaceAdjacency& adj, int smoothin
   Geometry g;
   const std::size_t n = m.face.size();
   g.normal = smooth_face_normals(m, adj, std::max(0, smoothing_iterations));
-  g.centroid.assign(n, Eigen::Vector3d::Zero());
-  g.area.assign(n, 0.0);
+  FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  g.centroid = std::move(faces.centroid);
+  g.area = std::move(faces.area);
   g.valid.assign(n, 0);
   for (std::size_t f = 0; f < n; ++f) {
-    const auto& face = m.face[f];
-    if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)
-      continue;
-    Eigen::Vector3d p[3];
-    for (int k = 0; k < 3; ++k)
-      p[k] = Eigen::Vector3d(double(face.cP(k)[0]), double(face.cP(k)[1]), double(face.cP(k)[2]));
-    const double a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    const Eigen::Vector3d c = (p[0] + p[1] + p[2]) / 3.0;
-    if (!std::isfinite(a) || !c.allFinite() || g.normal[f].isZero(0.0))
-      continue;
-    g.centroid[f] = c;
-    g.area[f] = a;
-    g.valid[f] = a > 0.0 ? 1 : 0;
+    if (g.normal[f].isZero(0.0)) {
+      g.centroid[f].setZero();
+      g.area[f] = 0.0;
+    }
+    g.valid[f] = g.area[f] > 0.0 ? 1 : 0;
   }
   return g;
 }
@@ -394,7 +388,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   // Roughness is measured on patches of a fixed share of the surface, so that the estimate does not depend
   // on the resolution and sees noise that is correlated over more than a seed patch (CT scans).
   const double roughness =
-      estimate_surface_roughness(m, adj, std::max(patch_faces, edge_count / kRoughnessPatchDivisor));
+      estimate_surface_roughness(g.centroid, g.area, adj, std::max(patch_faces, edge_count / kRoughnessPatchDivisor));
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   if (!std::isfinite(tol) || !(tol > 0))
     tol = 0.0;
