@@ -1,6 +1,6 @@
 // bench_fit: time of fit_primitive_auto on segments of 1k, 10k, 100k and 1M points, and of each fit type
 // on 100k points (median of 5 runs). Data: noisy (sigma = 0.5% of the size) patches with normals.
-#include "common/fit_primitive_auto.h"
+#include "common/fit/fit_primitive_auto.h"
 #include "../tests/unit/test_fit_data.h"
 
 #include <algorithm>

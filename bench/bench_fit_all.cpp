@@ -8,11 +8,11 @@
 // Usage: bench_fit_all SEGMENTED.ply [--runs N]
 #include "bracket/bracket_mesh.h"
 
-#include "common/estimate_surface_roughness.h"
-#include "common/face_adjacency.h"
-#include "common/fit_segments_auto.h"
-#include "common/gather_segment_samples.h"
-#include "common/snap_segments.h"
+#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/pipeline/fit_segments_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/snap/snap_segments.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,8 @@
 // bench_measure_accuracy: the paper's accuracy measurement at its size, 1M samples against a 1M-face
 // reference (a tessellated torus), timing sampling, index build and distance queries (median of 3 runs),
 // for several grid densities and for a measured surface that is offset from the reference.
-#include "common/measure_accuracy.h"
-#include "common/sample_surface_uniform.h"
+#include "common/measure/measure_accuracy.h"
+#include "common/mesh/sample_surface_uniform.h"
 
 #include <vcg/complex/complex.h>
 

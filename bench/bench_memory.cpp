@@ -13,11 +13,11 @@
 // before the phase, VmHWM - VmRSS(before) after it is what the phase added. Goal: <= 2x the mesh size.
 // Usage: bench_memory [faces (default 4000000)] [--malformed] [--runs R (default 3; times are medians)]
 //        e.g. bench_memory 10000000 --malformed   (the 10-million-face run; not for CI)
-#include "common/face_adjacency.h"
-#include "common/fit_primitive_auto.h"
-#include "common/gather_segment_samples.h"
-#include "common/segment_by_normal_angle.h"
-#include "common/snap_segments.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/fit/fit_primitive_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/snap/snap_segments.h"
 
 #include <vcg/complex/complex.h>
 

@@ -2,8 +2,8 @@
 // adjacency build included) and of build_face_adjacency alone, on noisy tori of about 100k, 1M and 4M
 // triangles with float coordinates like MeshLab's CMeshO. Prints the median of 5 runs and ns per face, in
 // thread CPU time (what one core spends, robust when the machine is shared) and in wall-clock time.
-#include "common/face_adjacency.h"
-#include "common/segment_by_normal_angle.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/segment/segment_by_normal_angle.h"
 
 #include <vcg/complex/complex.h>
 

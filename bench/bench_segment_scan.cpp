@@ -17,13 +17,13 @@
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
-#include "common/estimate_surface_roughness.h"
-#include "common/face_adjacency.h"
-#include "common/fit_primitive.h"
-#include "common/fit_primitive_auto.h"
-#include "common/gather_segment_samples.h"
-#include "common/segment_by_primitive_growing.h"
-#include "common/snap_segments.h"
+#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/fit/fit_primitive.h"
+#include "common/fit/fit_primitive_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/segment/segment_by_primitive_growing.h"
+#include "common/snap/snap_segments.h"
 
 #include <algorithm>
 #include <chrono>

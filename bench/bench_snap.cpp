@@ -1,6 +1,6 @@
 // bench_snap: snap_segments on a ~1M-face labelled box (10 x 6 x 4, noisy, rounded edges) onto its six
 // exact planes, with sharp edges and flip prevention; float and double meshes. Median of 5 runs.
-#include "common/snap_segments.h"
+#include "common/snap/snap_segments.h"
 
 #include <vcg/complex/complex.h>
 

@@ -2,8 +2,8 @@
 
 #include "primitive_edit_panel.h"
 
-#include "common/describe_primitive.h"
-#include "common/primitive_wireframe.h"
+#include "common/base/describe_primitive.h"
+#include "common/geometry/primitive_wireframe.h"
 
 #include <common/GLExtensionsManager.h>
 #include <meshlab/glarea.h>

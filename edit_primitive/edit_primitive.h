@@ -5,7 +5,7 @@
 #ifndef PRIMITIVE_EDIT_EDIT_PRIMITIVE_H
 #define PRIMITIVE_EDIT_EDIT_PRIMITIVE_H
 
-#include "primitive_edit_session.h"
+#include "common/pipeline/primitive_edit_session.h"
 
 #include <common/interfaces.h>
 

@@ -5,7 +5,7 @@
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
 
-#include "common/primitive.h"
+#include "common/base/primitive.h"
 
 #include <QWidget>
 

@@ -1,8 +1,8 @@
 #include "filter_measure_accuracy.h"
 
-#include "common/measure_accuracy.h"
-#include "common/mesh_input_problem.h"
-#include "common/sample_surface_uniform.h"
+#include "common/measure/measure_accuracy.h"
+#include "common/mesh/mesh_input_problem.h"
+#include "common/mesh/sample_surface_uniform.h"
 
 #include <vcg/complex/algorithms/update/color.h>
 

@@ -2,7 +2,7 @@
 // Oh, Choi, "Mesh Editing with an Intuitive User Interface"): samples the measured mesh uniformly by area,
 // measures each sample's shortest distance to the reference (CAD) mesh and logs the share within the
 // tolerance, mean, RMS, max and a histogram; optionally paints a deviation map on the measured mesh.
-// The geometry is in common/sample_surface_uniform.h and common/measure_accuracy.h.
+// The geometry is in common/mesh/sample_surface_uniform.h and common/measure/measure_accuracy.h.
 #ifndef PRIMITIVE_EDIT_FILTER_MEASURE_ACCURACY_H
 #define PRIMITIVE_EDIT_FILTER_MEASURE_ACCURACY_H
 

@@ -1,15 +1,15 @@
 #include "filter_segment.h"
 
-#include "common/count_segments.h"
-#include "common/face_adjacency.h"
-#include "common/merge_segments.h"
-#include "common/mesh_input_problem.h"
-#include "common/move_faces_to_new_segment.h"
-#include "common/segment_attribute.h"
-#include "common/segment_by_normal_angle.h"
-#include "common/segment_by_primitive_growing.h"
-#include "common/segment_primitive_attribute.h"
-#include "common/split_segments_by_plane.h"
+#include "common/mesh/count_segments.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/segment/merge_segments.h"
+#include "common/mesh/mesh_input_problem.h"
+#include "common/segment/move_faces_to_new_segment.h"
+#include "common/mesh/segment_attribute.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/segment/segment_by_primitive_growing.h"
+#include "common/mesh/segment_primitive_attribute.h"
+#include "common/segment/split_segments_by_plane.h"
 
 #include <QElapsedTimer>
 

@@ -2,15 +2,15 @@
 // bracket of 90x25x12 mm as an OpenCASCADE solid (or reads a STEP file), tessellates it, and writes
 //   <out>/reference.ply   the closed triangle mesh, per-face quality = B-rep face index;
 //   <out>/reference.json  per B-rep face: index, surface type, exact parameters in the conventions of
-//                         common/primitive.h, area and triangle count.
+//                         common/base/primitive.h, area and triangle count.
 // Because every triangle comes from one B-rep face, the reference's segmentation and primitive types
 // are exact, which is what the segmentation and fitting benchmarks score against.
 //
 // Usage: make_bracket [--step FILE] [--out DIR] [--deflection MM] [--angle RAD]
 #include "bracket_mesh.h"
 
-#include "common/closest_point_on_primitive.h"
-#include "common/primitive.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/base/primitive.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/stat.h>
@@ -238,7 +238,7 @@ std::string num(double v)
   return buf;
 }
 
-// A B-rep face's analytic surface in the conventions of common/primitive.h, and on which side the
+// A B-rep face's analytic surface in the conventions of common/base/primitive.h, and on which side the
 // material is: outward = +1 when the outward normal points away from the axis/centre (a boss, a ball),
 // -1 when towards it (a hole, a dimple, a concave fillet); planes carry their outward normal. The
 // outward normal is sampled on the face (BRepGProp_Face honours the face orientation), so surfaces with
@@ -409,7 +409,7 @@ Tessellation tessellate(const TopTools_IndexedMapOfShape& faces)
   return t;
 }
 
-// Checks the exported parameters against the tessellation with common/closest_point_on_primitive.h:
+// Checks the exported parameters against the tessellation with common/geometry/closest_point_on_primitive.h:
 // every node of a face must lie on its primitive, every triangle must face the side "outward" says.
 // Returns the largest node distance; counts the triangles facing the other way.
 double check_surfaces(const std::vector<FaceSurface>& surfaces, const Tessellation& t, int* misoriented)

@@ -6,8 +6,8 @@
 // Usage: measure_scan MESH.ply REFERENCE.ply [--samples N] [--tolerance MM] [--seed N]
 #include "bracket_mesh.h"
 
-#include "common/measure_accuracy.h"
-#include "common/sample_surface_uniform.h"
+#include "common/measure/measure_accuracy.h"
+#include "common/mesh/sample_surface_uniform.h"
 
 #include <chrono>
 #include <cmath>

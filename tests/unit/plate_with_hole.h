@@ -4,7 +4,7 @@
 #ifndef PRIMITIVE_EDIT_TEST_PLATE_WITH_HOLE_H
 #define PRIMITIVE_EDIT_TEST_PLATE_WITH_HOLE_H
 
-#include "common/primitive.h"
+#include "common/base/primitive.h"
 
 #include <vcg/complex/complex.h>
 

@@ -1,7 +1,7 @@
-// Tests of the Primitive Edit tool's state logic (edit_primitive/primitive_edit_session.h) without a window,
+// Tests of the Primitive Edit tool's state logic (common/pipeline/primitive_edit_session.h) without a window,
 // on the tests' mesh type and on MeshLab's CMeshO: pick, merge, split by a screen line with a given camera,
 // fit, edit, apply with sharp edges, undo several steps, and bad input.
-#include "edit_primitive/primitive_edit_session.h"
+#include "common/pipeline/primitive_edit_session.h"
 
 #include "test_mesh.h"
 

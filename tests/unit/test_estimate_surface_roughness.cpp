@@ -3,9 +3,9 @@
 #include "test_mesh.h"
 #include "test_fit_data.h"
 
-#include "common/estimate_surface_roughness.h"
-#include "common/face_adjacency.h"
-#include "common/fit_primitive_auto.h"
+#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/fit/fit_primitive_auto.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 #ifndef PRIMITIVE_EDIT_TEST_FIT_DATA_H
 #define PRIMITIVE_EDIT_TEST_FIT_DATA_H
 
-#include "common/closest_point_on_primitive.h"
-#include "common/primitive.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/base/primitive.h"
 
 #include <Eigen/Geometry>
 

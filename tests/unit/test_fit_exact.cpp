@@ -1,6 +1,6 @@
 // Exact (noise-free) samples of every primitive type, full and partial patches, with and without
 // normals: each fit must recover the parameters to 1e-5 relative error, in the output conventions.
-#include "common/fit_primitive.h"
+#include "common/fit/fit_primitive.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>

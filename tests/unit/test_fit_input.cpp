@@ -1,7 +1,7 @@
 // Bad input to the fits (too few points, NaN/Inf, mismatched sizes, negative weights, degenerate
 // point sets) and the output conventions (plane normal along the normals, cylinder origin nearest the
 // centroid, cone axis into the opening, weights honoured).
-#include "common/fit_primitive_auto.h"
+#include "common/fit/fit_primitive_auto.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Noisy data (Gaussian, sigma = 1% of the size, fixed seeds, normals tilted ~5 degrees): radius
 // within 1%, the right type from fit_primitive_auto; 10% far outliers: radius within 1% when robust.
-#include "common/fit_primitive_auto.h"
+#include "common/fit/fit_primitive_auto.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>

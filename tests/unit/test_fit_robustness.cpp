@@ -2,9 +2,9 @@
 // cylinder arc of a few degrees, cones of half-angle near 0 and 90 degrees, a torus whose tube nearly fills
 // its hole. Every fit must give either ok == false with a message, or a valid primitive (no NaN) whose
 // reported residuals are the true ones and small; where the data determine the primitive, its parameters.
-#include "common/closest_point_on_primitive.h"
-#include "common/fit_primitive.h"
-#include "common/fit_primitive_auto.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/fit/fit_primitive.h"
+#include "common/fit/fit_primitive_auto.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>

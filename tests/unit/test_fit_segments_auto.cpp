@@ -1,6 +1,6 @@
 // fit_segments_auto: every segment gets the type it is, whatever the thread count; too small a segment is
 // free-form; progress reaches the total on the calling thread.
-#include "common/fit_segments_auto.h"
+#include "common/pipeline/fit_segments_auto.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// Tests of common/sample_surface_uniform.h and common/measure_accuracy.h, on the test mesh type and on
+// Tests of common/mesh/sample_surface_uniform.h and common/measure/measure_accuracy.h, on the test mesh type and on
 // MeshLab's CMeshO.
-#include "common/measure_accuracy.h"
-#include "common/sample_surface_uniform.h"
+#include "common/measure/measure_accuracy.h"
+#include "common/mesh/sample_surface_uniform.h"
 
 #include "test_mesh.h"
 

@@ -1,7 +1,7 @@
-// Tests of common/plane_from_screen_line.h (the split tool's cutting plane) and common/primitive_wireframe.h
+// Tests of common/geometry/plane_from_screen_line.h (the split tool's cutting plane) and common/geometry/primitive_wireframe.h
 // (the drawing of a fitted primitive).
-#include "common/plane_from_screen_line.h"
-#include "common/primitive_wireframe.h"
+#include "common/geometry/plane_from_screen_line.h"
+#include "common/geometry/primitive_wireframe.h"
 
 #include <gtest/gtest.h>
 

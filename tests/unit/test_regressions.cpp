@@ -1,5 +1,5 @@
 // Regression tests for bugs found by fuzzing common/ (fuzz/fuzz_common.cpp); each names its reproducer.
-#include "common/measure_accuracy.h"
+#include "common/measure/measure_accuracy.h"
 #include "test_mesh.h"
 
 #include <gtest/gtest.h>

@@ -4,8 +4,8 @@
 // MeshLab's CMeshO (float coordinates).
 #include "test_mesh.h"
 
-#include "common/face_adjacency.h"
-#include "common/segment_by_primitive_growing.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/segment/segment_by_primitive_growing.h"
 
 #include <common/ml_mesh_type.h>
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // The whole batch path on a part with blurred edges: segment by normal angle, fit every segment
 // (automatic type, from the mesh's own samples), snap with sharp edges. The plate's chamfered rims
 // must come out as exact sharp corners, as Primitive: Fit All Segments promises.
-#include "common/fit_primitive_auto.h"
-#include "common/gather_segment_samples.h"
-#include "common/segment_by_normal_angle.h"
-#include "common/snap_segments.h"
+#include "common/fit/fit_primitive_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
 #include "test_mesh.h"
 

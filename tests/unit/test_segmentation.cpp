@@ -3,15 +3,15 @@
 // MeshLab's CMeshO and a float mesh with fixed face quality and colour.
 #include "test_mesh.h"
 
-#include "common/color_segments.h"
-#include "common/compact_segment_ids.h"
-#include "common/face_adjacency.h"
-#include "common/merge_segments.h"
-#include "common/move_faces_to_new_segment.h"
-#include "common/segment_attribute.h"
-#include "common/segment_by_normal_angle.h"
-#include "common/smooth_face_normals.h"
-#include "common/split_segments_by_plane.h"
+#include "common/mesh/color_segments.h"
+#include "common/mesh/compact_segment_ids.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/segment/merge_segments.h"
+#include "common/segment/move_faces_to_new_segment.h"
+#include "common/mesh/segment_attribute.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/mesh/smooth_face_normals.h"
+#include "common/segment/split_segments_by_plane.h"
 
 #include <common/ml_mesh_type.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Tests of the sharp-edge math: closest_point_on_intersection and common_point_of_primitives.
-#include "common/closest_point_on_intersection.h"
-#include "common/common_point_of_primitives.h"
+#include "common/geometry/closest_point_on_intersection.h"
+#include "common/geometry/common_point_of_primitives.h"
 
 #include <gtest/gtest.h>
 

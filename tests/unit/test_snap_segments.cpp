@@ -1,7 +1,7 @@
 // Tests of snap_segments on the tests' mesh type and on MeshLab's CMeshO: parameter overrides, sharp
 // edges and corners, flip prevention, unsnapped segments and bad input.
-#include "common/closest_point_on_primitive.h"
-#include "common/snap_segments.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
 #include "test_mesh.h"
 

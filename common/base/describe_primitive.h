@@ -1,0 +1,48 @@
+// describe_primitive.h: a primitive's parameters in the user's terms, as one line of text for logs.
+//
+// Input:  a primitive. Output: e.g. "Cylinder: axis point (1, 2, 3), axis (0, 0, 1), radius 4.8,
+//         diameter 9.6". Angles in degrees. Cost: O(1).
+#ifndef PRIMITIVE_EDIT_DESCRIBE_PRIMITIVE_H
+#define PRIMITIVE_EDIT_DESCRIBE_PRIMITIVE_H
+
+#include "common/base/primitive.h"
+
+#include <cstdio>
+#include <string>
+
+namespace primitive_edit {
+
+inline std::string describe_primitive(const Primitive& p)
+{
+  auto vec = [](const Eigen::Vector3d& v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v.x(), v.y(), v.z());
+    return std::string(buf);
+  };
+  auto num = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return std::string(buf);
+  };
+  const double degrees = 57.29577951308232;
+  switch (p.type) {
+  case PrimitiveType::Plane:
+    return "Plane: normal " + vec(p.axis) + ", offset " + num(p.axis.dot(p.origin)) + ", point " + vec(p.origin);
+  case PrimitiveType::Sphere:
+    return "Sphere: centre " + vec(p.origin) + ", radius " + num(p.radius);
+  case PrimitiveType::Cylinder:
+    return "Cylinder: axis point " + vec(p.origin) + ", axis " + vec(p.axis) + ", radius " + num(p.radius) +
+           ", diameter " + num(2 * p.radius);
+  case PrimitiveType::Cone:
+    return "Cone: apex " + vec(p.origin) + ", axis " + vec(p.axis) + ", half-angle " +
+           num(p.half_angle * degrees) + " deg";
+  case PrimitiveType::Torus:
+    return "Torus: centre " + vec(p.origin) + ", axis " + vec(p.axis) + ", major radius " + num(p.radius) +
+           ", minor radius " + num(p.minor_radius);
+  }
+  return "Unknown primitive";
+}
+
+} // namespace primitive_edit
+
+#endif

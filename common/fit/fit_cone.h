@@ -1,0 +1,136 @@
+// fit_cone.h: circular cone (one nappe) through points.
+//
+// Input:  points N x 3 (N >= 7), normals N x 3 or empty, weights N or empty (= all 1), options.
+// Output: FitResult with a Cone: origin = apex, unit axis from the apex into the opening (towards
+//         the points), half angle in (0, pi/2). Data of a cylinder give a cone with a tiny half angle
+//         and a far apex (fit_primitive_auto then prefers the cylinder). ok == false for bad input or
+//         when no start exists.
+// Method: candidate axis lines, each turned into a cone by regressing the distance to the line on
+//         the height along it (rho = rho0 + h tan(alpha): the cone's generator), refined
+//         geometrically (refine_best_start.h), best kept. Lines:
+//         - from normals (given, or those of the Taubin quadric Andrews & Sequin start from, exact on
+//           exact cone data): a cone's normals make a constant angle with the axis, so the axis
+//           minimises sum w (n . a - mean)^2 = smallest eigenvector of the normals' covariance; the
+//           apex lies on every tangent plane: least squares of n_i . (x - p_i) = 0 (3 x 3 system);
+//         - the cylinder-style directions (smallest eigenvector of sum n n^T, principal axes of the
+//           points), placed by a circle fit of the projected points (fit_circle_around_axis.h).
+//         Large inputs start on a 2000-point subsample; the winner is refined on all points.
+// Cost:   O(N) per LM iteration.
+#ifndef PRIMITIVE_EDIT_FIT_CONE_H
+#define PRIMITIVE_EDIT_FIT_CONE_H
+
+#include "common/geometry/axis_orthogonal_to_normals.h"
+#include "common/fit/check_fit_input.h"
+#include "common/fit/fit_circle_around_axis.h"
+#include "common/fit/fit_start_normals.h"
+#include "common/fit/minimum_points_for.h"
+#include "common/fit/refine_best_start.h"
+#include "common/geometry/weighted_pca.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace primitive_edit {
+
+namespace fit_cone_detail {
+
+// The cone whose generator best matches rho(h) around the line (point c, unit direction a).
+inline bool cone_around_line(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
+                             const Eigen::Vector3d& c, Eigen::Vector3d a, Primitive* out)
+{
+  double sw = 0, sh = 0, sr = 0, shh = 0, shr = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double w = weights.size() ? weights[i] : 1.0;
+    const Eigen::Vector3d v = points.row(i).transpose() - c;
+    const double h = v.dot(a), rho = (v - h * a).norm();
+    sw += w, sh += w * h, sr += w * rho, shh += w * h * h, shr += w * h * rho;
+  }
+  if (!(sw > 0))
+    return false;
+  double mh = sh / sw;
+  const double mr = sr / sw;
+  const double var = shh / sw - mh * mh, cov = shr / sw - mh * mr;
+  if (!(var > 0))
+    return false;
+  double k = cov / var;
+  if (k < 0) {
+    a = -a;
+    mh = -mh;
+    k = -k;
+  }
+  // Nearly cylindrical data: start from a small angle, the refinement finds the true one.
+  k = std::max(k, 1e-3);
+  out->type = PrimitiveType::Cone;
+  out->axis = a;
+  out->origin = c + (mh - mr / k) * a;
+  out->half_angle = std::atan(k);
+  return primitive_is_valid(*out);
+}
+
+// Axis line of a cone from its normals (see the header comment); false when they do not determine it.
+inline bool line_from_cone_normals(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                                   const Eigen::VectorXd& weights, Eigen::Vector3d* point, Eigen::Vector3d* axis)
+{
+  if (!normals.rows())
+    return false;
+  const WeightedPca spread = weighted_pca(normals, weights);
+  if (!spread.ok || !(spread.eigenvalues[1] > 0))
+    return false;
+  *axis = spread.axes.col(0).normalized();
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Eigen::Vector3d n = normals.row(i).transpose();
+    const double w = weights.size() ? weights[i] : 1.0;
+    A += w * n * n.transpose();
+    b += w * n * n.dot(points.row(i).transpose());
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+  if (!(eig.eigenvalues()[0] > 1e-6 * eig.eigenvalues()[2]))
+    return false;
+  *point = eig.eigenvectors() * (eig.eigenvalues().cwiseInverse().asDiagonal() * (eig.eigenvectors().transpose() * b));
+  return point->allFinite() && axis->allFinite();
+}
+
+} // namespace fit_cone_detail
+
+inline FitResult fit_cone(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                          const Eigen::VectorXd& weights, const FitOptions& options = {})
+{
+  FitResult out;
+  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Cone), &out.message))
+    return out;
+  const FitSample s = fit_subsample(points, normals, weights, 2000);
+  const Eigen::MatrixX3d start_normals = fit_start_normals(s);
+  std::vector<Primitive> starts;
+  Primitive p;
+  Eigen::Vector3d c, a;
+  if (fit_cone_detail::line_from_cone_normals(s.points, start_normals, s.weights, &c, &a) &&
+      fit_cone_detail::cone_around_line(s.points, s.weights, c, a, &p))
+    starts.push_back(p);
+  std::vector<Eigen::Vector3d> directions;
+  if (start_normals.rows()) {
+    const WeightedPca by_normals = weighted_pca(start_normals, s.weights);
+    if (by_normals.ok)
+      directions.push_back(by_normals.axes.col(0).normalized());
+    Eigen::Vector3d d;
+    if (axis_orthogonal_to_normals(start_normals, s.weights, &d))
+      directions.push_back(d);
+  }
+  const WeightedPca pca = weighted_pca(s.points, s.weights);
+  for (int k = 2; k >= 0 && pca.ok; --k)
+    directions.push_back(pca.axes.col(k).normalized());
+  for (const Eigen::Vector3d& d : directions) {
+    if (!d.allFinite())
+      continue;
+    const AxisCircle circle = fit_circle_around_axis(s.points, s.weights, d);
+    if (circle.ok && fit_cone_detail::cone_around_line(s.points, s.weights, circle.centre, d, &p))
+      starts.push_back(p);
+  }
+  return refine_best_start(starts, points, weights, s, options);
+}
+
+} // namespace primitive_edit
+
+#endif

@@ -1,0 +1,36 @@
+// fit_primitive.h: fit a primitive of a given type (dispatch to fit_plane ... fit_torus).
+//
+// Input:  the type, points N x 3, normals N x 3 or empty, weights N or empty (= all 1), options.
+// Output: the FitResult of that type's fit (see each fit_*.h for the method and conventions).
+//         minimum_points_for(type) (minimum_points_for.h) is the fewest points each type accepts.
+// Cost:   that of the chosen fit, O(N) per LM iteration.
+#ifndef PRIMITIVE_EDIT_FIT_PRIMITIVE_H
+#define PRIMITIVE_EDIT_FIT_PRIMITIVE_H
+
+#include "common/fit/fit_cone.h"
+#include "common/fit/fit_cylinder.h"
+#include "common/fit/fit_plane.h"
+#include "common/fit/fit_sphere.h"
+#include "common/fit/fit_torus.h"
+#include "common/fit/minimum_points_for.h"
+
+namespace primitive_edit {
+
+inline FitResult fit_primitive(PrimitiveType type, const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                               const Eigen::VectorXd& weights, const FitOptions& options = {})
+{
+  switch (type) {
+  case PrimitiveType::Plane: return fit_plane(points, normals, weights, options);
+  case PrimitiveType::Sphere: return fit_sphere(points, normals, weights, options);
+  case PrimitiveType::Cylinder: return fit_cylinder(points, normals, weights, options);
+  case PrimitiveType::Cone: return fit_cone(points, normals, weights, options);
+  case PrimitiveType::Torus: return fit_torus(points, normals, weights, options);
+  }
+  FitResult out;
+  out.message = "unknown primitive type";
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif

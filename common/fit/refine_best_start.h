@@ -1,0 +1,73 @@
+// refine_best_start.h: refine several start primitives and keep the best, cheaply on large inputs.
+//
+// Input:  start primitives (invalid ones are skipped), the full points N x 3 and weights (empty = all 1),
+//         a subsample of them (fit_subsample.h; may be the full set), options.
+// Output: the FitResult of the best start: each start is refined briefly (refine_primitive.h, at most
+//         10 Levenberg-Marquardt iterations, no reweighting) on at most 500 points of the sample and
+//         scored by the median |distance| over all of them (robust: not fooled by a start that fits a
+//         small part and rejects the rest) or, with options.robust off, by the RMS; the winner is
+//         refined fully (with the robust rounds) on the sample, then on all points when the sample is
+//         smaller. ok == false with a message when no start could be refined.
+// Cost:   O(S * 500 * 10) for S starts, plus O((n + N) * iterations) for the winner.
+#ifndef PRIMITIVE_EDIT_REFINE_BEST_START_H
+#define PRIMITIVE_EDIT_REFINE_BEST_START_H
+
+#include "common/fit/fit_subsample.h"
+#include "common/fit/refine_primitive.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace primitive_edit {
+
+inline FitResult refine_best_start(const std::vector<Primitive>& starts, const Eigen::MatrixX3d& points,
+                                   const Eigen::VectorXd& weights, const FitSample& sample,
+                                   const FitOptions& options)
+{
+  // Screening: a few plain (not reweighted) iterations of each start on at most 500 points, judged by the
+  // median distance, which outliers do not sway; only the winner gets the robust rounds.
+  const FitSample screen = fit_subsample(sample.points, Eigen::MatrixX3d(), sample.weights, 500);
+  FitOptions screen_options = options;
+  screen_options.max_iterations = std::min(options.max_iterations, 10);
+  screen_options.robust = false;
+  Primitive winner;
+  bool have_winner = false;
+  double best_score = std::numeric_limits<double>::infinity();
+  for (const Primitive& start : starts) {
+    if (!primitive_is_valid(start))
+      continue;
+    const FitResult r = refine_primitive(start, screen.points, screen.weights, screen_options);
+    if (!r.ok)
+      continue;
+    double score = r.rms;
+    if (options.robust) {
+      std::vector<double> d;
+      d.reserve(static_cast<size_t>(screen.points.rows()));
+      for (Eigen::Index i = 0; i < screen.points.rows(); ++i)
+        if (!screen.weights.size() || screen.weights[i] > 0)
+          d.push_back(std::abs(signed_distance_to_primitive(r.primitive, screen.points.row(i).transpose())));
+      score = refine_detail::median_abs(d);
+    }
+    if (score < best_score) {
+      best_score = score;
+      winner = r.primitive;
+      have_winner = true;
+    }
+  }
+  FitResult best;
+  best.message = "no usable start (degenerate data)";
+  if (!have_winner)
+    return best;
+  best = refine_primitive(winner, sample.points, sample.weights, options);
+  if (best.ok && sample.points.rows() < points.rows()) {
+    FitResult full = refine_primitive(best.primitive, points, weights, options, 2);
+    if (full.ok)
+      return full;
+  }
+  return best;
+}
+
+} // namespace primitive_edit
+
+#endif

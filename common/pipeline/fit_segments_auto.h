@@ -1,0 +1,71 @@
+// fit_segments_auto.h: fit_primitive_auto on every segment of a mesh, on several threads.
+//
+// Input:  the segments' samples (gather_segment_samples.h), the options of fit_primitive_auto, the number of
+//         threads (<= 0: std::thread::hardware_concurrency()), and an optional progress callback
+//         progress(done, total) that is called on the calling thread only (so a GUI callback is safe), after
+//         each segment that thread fitted; it may be called with the same count twice.
+// Output: one AutoFitResult per segment, in segment order. A segment with fewer points than a plane needs is
+//         free-form with the message "too few points". The results do not depend on the thread count: each
+//         segment is fitted by the same deterministic code, whichever thread takes it.
+// Method: the segments are handed out one at a time (an atomic counter), largest first, so that a large
+//         segment does not start last and keep one thread busy while the others are idle.
+// Cost:   the sum of the segments' fit costs divided by the threads used, plus O(K log K) for the order.
+#ifndef PRIMITIVE_EDIT_FIT_SEGMENTS_AUTO_H
+#define PRIMITIVE_EDIT_FIT_SEGMENTS_AUTO_H
+
+#include "common/fit/fit_primitive_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/fit/minimum_points_for.h"
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+#include <numeric>
+#include <thread>
+#include <vector>
+
+namespace primitive_edit {
+
+inline std::vector<AutoFitResult> fit_segments_auto(const std::vector<SegmentSamples>& segments,
+                                                    const AutoFitOptions& options = {}, int threads = 0,
+                                                    const std::function<void(int, int)>& progress = {})
+{
+  const int count = int(segments.size());
+  std::vector<AutoFitResult> out(segments.size());
+  std::vector<int> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return segments[size_t(a)].points.rows() > segments[size_t(b)].points.rows();
+  });
+
+  std::atomic<int> next{0}, done{0};
+  auto work = [&](bool report) {
+    for (int i = next++; i < count; i = next++) {
+      const int s = order[size_t(i)];
+      const SegmentSamples& seg = segments[size_t(s)];
+      AutoFitResult& fit = out[size_t(s)];
+      if (seg.points.rows() < minimum_points_for(PrimitiveType::Plane))
+        fit.message = "too few points";
+      else
+        fit = fit_primitive_auto(seg.points, seg.normals, seg.weights, options);
+      const int finished = ++done;
+      if (report && progress)
+        progress(finished, count);
+    }
+  };
+
+  if (threads <= 0)
+    threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, count));
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads; ++t)
+    helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& h : helpers)
+    h.join();
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif

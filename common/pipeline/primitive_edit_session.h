@@ -1,0 +1,465 @@
+// primitive_edit_session.h: the state of the interactive Primitive Edit tool, without any window or Qt.
+//
+// A session is attached to one mesh. It keeps the segmentation (mirrored on the mesh by write_segment_ids
+// after every change), the picked segments, the last fit and the primitive the user edited from it, and an
+// undo stack. Every step calls common/: segment_by_normal_angle, merge_segments, split_segments_by_plane
+// (with plane_from_screen_line), fit_primitive / fit_primitive_auto on gather_segment_samples, and
+// snap_segments with the primitives recorded in the SegmentPrimitives attribute, exactly as the batch filter
+// "Primitive: Snap Segment" does. Each undoable step (auto segmentation, merge, split, apply) stores a
+// snapshot: the segment ids, the recorded primitives, the picked segments and the old positions of the
+// vertices it moved; undo() restores the latest one, up to kMaxUndo steps back.
+// Merge and split keep the recorded primitive of every segment they leave whole (under its new id).
+// Cost: attach, merge, split and undo O(F + V); fit and apply those of the fit and of snap_segments.
+#ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
+#define PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
+
+#include "common/mesh/count_segments.h"
+#include "common/base/describe_primitive.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/fit/fit_primitive.h"
+#include "common/fit/fit_primitive_auto.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/segment/merge_segments.h"
+#include "common/mesh/mesh_input_problem.h"
+#include "common/fit/minimum_points_for.h"
+#include "common/geometry/plane_from_screen_line.h"
+#include "common/mesh/segment_attribute.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/mesh/segment_primitive_attribute.h"
+#include "common/snap/snap_segments.h"
+#include "common/segment/split_segments_by_plane.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/complex.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdio>
+#include <deque>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace primitive_edit {
+
+// What a step did: ok, or why not, in words for the log.
+struct EditOutcome
+{
+  bool ok = false;
+  std::string message;
+};
+
+struct ApplyOutcome
+{
+  bool ok = false;
+  std::string message;
+  SnapReport report;
+};
+
+template <class MeshType>
+class PrimitiveEditSession
+{
+public:
+  using CoordType = typename MeshType::CoordType;
+  static constexpr std::size_t kMaxUndo = 32;
+
+  // Starts editing m. Returns false (message says why) when m cannot be edited: empty, a point cloud, or
+  // NaN coordinates. The segments are read from the mesh (read_segment_ids); with use_quality false only
+  // from the SegmentId attribute, not from a face quality that holds something else. The mesh must outlive
+  // the session or be detached first.
+  EditOutcome attach(MeshType& m, bool use_quality = true)
+  {
+    detach();
+    const std::string problem = mesh_input_problem(m);
+    if (!problem.empty())
+      return {false, problem};
+    mesh_ = &m;
+    if (!read_segment_ids(m, labels_) ||
+        (!use_quality && !detail::has_int_face_attribute(m, std::string(kSegmentAttributeName))))
+      labels_.assign(m.face.size(), -1);
+    adjacency_ = build_face_adjacency(m);
+    return {true, has_segments() ? std::to_string(segment_count()) + " segments" : "no segments yet"};
+  }
+
+  void detach()
+  {
+    mesh_ = nullptr;
+    labels_.clear();
+    adjacency_ = FaceAdjacency();
+    picked_.clear();
+    undo_.clear();
+    clear_fit();
+  }
+
+  bool attached() const { return mesh_ != nullptr; }
+  bool has_segments() const { return segment_count() > 0; }
+  int segment_count() const { return count_segments(labels_); }
+  const std::vector<int>& segment_of_face() const { return labels_; }
+  int segment_of(int face) const
+  {
+    return face >= 0 && std::size_t(face) < labels_.size() ? labels_[std::size_t(face)] : -1;
+  }
+  // Faces of the picked segments.
+  std::vector<int> picked_faces() const
+  {
+    std::vector<int> faces;
+    for (std::size_t f = 0; f < labels_.size(); ++f)
+      if (labels_[f] >= 0 && is_picked(labels_[f]))
+        faces.push_back(int(f));
+    return faces;
+  }
+
+  EditOutcome auto_segment(const SegmentByNormalAngleParams& params)
+  {
+    if (const EditOutcome bad = check_mesh(); !bad.ok)
+      return bad;
+    if (!(params.angle_deg > 0 && params.angle_deg < 180))
+      return {false, "the angle must be between 0 and 180 degrees"};
+    push_snapshot("segmentation", {});
+    std::vector<int> labels;
+    const int k = segment_by_normal_angle(*mesh_, adjacency_, params, labels);
+    store(labels, SegmentPrimitives());
+    picked_.clear();
+    clear_fit();
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.3g", params.angle_deg);
+    return {true, std::to_string(k) + " segments at " + angle + " degrees"};
+  }
+
+  // Picks the segment of a face: alone, or (additive) added to / removed from the picked ones. A face with no
+  // segment (or -1: a click in empty space) clears the picks unless additive. Returns whether a segment
+  // was hit.
+  bool pick(int face, bool additive)
+  {
+    const int s = attached() ? segment_of(face) : -1;
+    const std::vector<int> before = picked_;
+    if (s < 0) {
+      if (!additive)
+        picked_.clear();
+    } else if (!additive) {
+      picked_.assign(1, s);
+    } else {
+      const auto it = std::find(picked_.begin(), picked_.end(), s);
+      if (it == picked_.end())
+        picked_.push_back(s);
+      else
+        picked_.erase(it);
+    }
+    if (picked_ != before)
+      clear_fit();
+    return s >= 0;
+  }
+  const std::vector<int>& picked() const { return picked_; }
+  bool is_picked(int segment) const { return std::find(picked_.begin(), picked_.end(), segment) != picked_.end(); }
+
+  // Merges the picked segments into one, which stays picked.
+  EditOutcome merge_picked()
+  {
+    if (const EditOutcome bad = check_mesh(); !bad.ok)
+      return bad;
+    if (picked_.size() < 2)
+      return {false, "pick at least two segments to merge (Shift+click adds a segment)"};
+    push_snapshot("merge", {});
+    std::vector<int> labels = labels_;
+    const int before = segment_count();
+    const int face = first_face_of(picked_.front());
+    const int after = merge_segments(labels, picked_);
+    store(labels, carry_primitives(labels));
+    picked_.assign(1, segment_of(face));
+    clear_fit();
+    return {true, std::to_string(before - after + 1) + " segments merged into segment " +
+                      std::to_string(picked_.front()) + "; " + std::to_string(after) + " segments"};
+  }
+
+  // Cuts the picked segments by a plane; every connected piece on each side becomes a segment.
+  EditOutcome split_picked_by_plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
+  {
+    if (const EditOutcome bad = check_mesh(); !bad.ok)
+      return bad;
+    if (picked_.empty())
+      return {false, "pick the segment to split first"};
+    if (!point.allFinite() || !normal.allFinite() || !(normal.norm() > 0))
+      return {false, "the cutting plane is not valid"};
+    std::vector<int> labels = labels_;
+    const int before = segment_count();
+    const int after = split_segments_by_plane(*mesh_, adjacency_, labels, picked_, point, normal);
+    if (after == before)
+      return {false, "the line does not cut the picked segment (draw it across the segment)"};
+    push_snapshot("split", {});
+    store(labels, carry_primitives(labels));
+    const std::size_t cut = picked_.size();
+    picked_.clear();
+    clear_fit();
+    return {true, std::to_string(cut) + " segment(s) cut into " + std::to_string(after - before + int(cut)) +
+                      " pieces; " + std::to_string(after) + " segments"};
+  }
+
+  // The same, with the plane through a line drawn on screen and the view direction (see plane_from_screen_line).
+  EditOutcome split_picked_by_screen_line(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                          const Eigen::Matrix4d& modelview, const Eigen::Matrix4d& projection,
+                                          const Eigen::Vector4d& viewport)
+  {
+    const ScreenLinePlane plane = plane_from_screen_line(a, b, modelview, projection, viewport);
+    if (!plane.ok)
+      return {false, plane.message};
+    return split_picked_by_plane(plane.point, plane.normal);
+  }
+
+  // Fits a primitive of the given type (std::nullopt: the type that explains the points best) to the union
+  // of the picked segments. On success the fit also becomes the edited primitive.
+  FitResult fit(std::optional<PrimitiveType> type)
+  {
+    clear_fit();
+    FitResult out;
+    if (const EditOutcome bad = check_mesh(); !bad.ok) {
+      out.message = bad.message;
+      return out;
+    }
+    if (picked_.empty()) {
+      out.message = "pick a segment to fit first";
+      return out;
+    }
+    const SegmentSamples samples = picked_samples();
+    if (type) {
+      if (samples.points.rows() < minimum_points_for(*type)) {
+        out.message = std::string("the picked segments have ") + std::to_string(samples.points.rows()) +
+                      " points; a " + primitive_type_name(*type) + " needs at least " +
+                      std::to_string(minimum_points_for(*type));
+        return out;
+      }
+      out = fit_primitive(*type, samples.points, samples.normals, samples.weights);
+    } else {
+      if (samples.points.rows() < minimum_points_for(PrimitiveType::Plane)) {
+        out.message = "the picked segments have too few points to fit";
+        return out;
+      }
+      const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights);
+      out = automatic.best;
+      if (!automatic.ok) {
+        out.ok = false;
+        out.message = "no primitive fits: " + automatic.message;
+      }
+    }
+    if (out.ok && !primitive_is_valid(out.primitive)) {
+      out.ok = false;
+      out.message = "the fit gave an invalid primitive";
+    }
+    if (out.ok) {
+      fit_ = out;
+      edited_ = out.primitive;
+      fit_points_ = samples.points;
+    }
+    return out;
+  }
+  const std::optional<FitResult>& last_fit() const { return fit_; }
+  const std::optional<Primitive>& edited() const { return edited_; }
+  // Points of the last fit (to draw the primitive where the segment is).
+  const Eigen::MatrixX3d& fit_points() const { return fit_points_; }
+
+  // Replaces the edited primitive (the axis is normalised). Needs a fit first; the type must stay.
+  EditOutcome set_edited(Primitive p)
+  {
+    if (!edited_)
+      return {false, "fit a primitive first"};
+    if (p.type != edited_->type)
+      return {false, "the type differs from the fitted one; fit again with the new type"};
+    if (p.axis.allFinite() && p.axis.norm() > 0)
+      p.axis.normalize();
+    if (!primitive_is_valid(p))
+      return {false, "not a valid " + std::string(primitive_type_name(p.type)) + ": " + describe_primitive(p)};
+    edited_ = p;
+    return {true, describe_primitive(p)};
+  }
+
+  // Moves the picked segments onto the edited primitive, with sharp edges against the segments snapped
+  // before (recorded on the mesh), and records the primitive for them. Normals and bounding box are updated.
+  ApplyOutcome apply(bool sharp_edges = true)
+  {
+    ApplyOutcome out;
+    if (const EditOutcome bad = check_mesh(); !bad.ok) {
+      out.message = bad.message;
+      return out;
+    }
+    if (!edited_ || picked_.empty()) {
+      out.message = "pick a segment and fit a primitive first";
+      return out;
+    }
+    const int count = segment_count();
+    const SegmentPrimitives recorded = read_segment_primitives(*mesh_, count);
+    SegmentPrimitives primitives(static_cast<std::size_t>(count));
+    if (sharp_edges)
+      std::copy(recorded.begin(), recorded.end(), primitives.begin());
+    for (int s : picked_)
+      primitives[std::size_t(s)] = *edited_;
+
+    std::vector<CoordType> before(mesh_->vert.size());
+    for (std::size_t v = 0; v < before.size(); ++v)
+      before[v] = mesh_->vert[v].cP();
+    SnapOptions options;
+    options.sharp_edges = sharp_edges;
+    out.report = snap_segments(*mesh_, labels_, primitives, options);
+    std::vector<std::pair<int, CoordType>> moved;
+    for (std::size_t v = 0; v < before.size(); ++v)
+      if (mesh_->vert[v].cP() != before[v])
+        moved.emplace_back(int(v), before[v]);
+    push_snapshot("apply", std::move(moved));
+
+    SegmentPrimitives updated = recorded;
+    for (int s : picked_)
+      updated[std::size_t(s)] = *edited_;
+    write_segment_primitives(*mesh_, updated);
+    update_geometry();
+    out.ok = true;
+    out.message = describe_primitive(*edited_);
+    return out;
+  }
+
+  bool can_undo() const { return !undo_.empty(); }
+  // What undo() would undo ("segmentation", "merge", "split", "apply"), or "" when nothing.
+  std::string undo_label() const { return undo_.empty() ? std::string() : undo_.back().what; }
+  // Whether undo() would move vertices (so that normals and render buffers need an update).
+  bool undo_moves_vertices() const { return !undo_.empty() && !undo_.back().positions.empty(); }
+  std::size_t undo_depth() const { return undo_.size(); }
+
+  // Undoes the latest step: segment ids, recorded primitives, picks and moved vertices come back.
+  bool undo()
+  {
+    if (undo_.empty() || check_mesh().ok == false) {
+      undo_.clear();
+      return false;
+    }
+    Snapshot s = std::move(undo_.back());
+    undo_.pop_back();
+    for (const auto& moved : s.positions)
+      if (std::size_t(moved.first) < mesh_->vert.size())
+        mesh_->vert[std::size_t(moved.first)].P() = moved.second;
+    // Undoing an apply keeps the fit and the edited parameters, so the user can change them and apply again.
+    if (s.labels != labels_ || s.picked != picked_)
+      clear_fit();
+    store(s.labels, s.primitives);
+    picked_ = s.picked;
+    if (!s.positions.empty())
+      update_geometry();
+    return true;
+  }
+
+private:
+  struct Snapshot
+  {
+    std::string what;
+    std::vector<int> labels;
+    SegmentPrimitives primitives;
+    std::vector<int> picked;
+    std::vector<std::pair<int, CoordType>> positions;
+  };
+
+  // The mesh may be changed behind the session's back (another filter while the tool is on).
+  EditOutcome check_mesh() const
+  {
+    if (mesh_ == nullptr)
+      return {false, "no mesh is being edited"};
+    if (labels_.size() != mesh_->face.size() || adjacency_.face_count() != int(mesh_->face.size()))
+      return {false, "the mesh has changed since the tool started; restart the tool"};
+    return {true, ""};
+  }
+
+  void clear_fit()
+  {
+    fit_.reset();
+    edited_.reset();
+    fit_points_.resize(0, 3);
+  }
+
+  int first_face_of(int segment) const
+  {
+    for (std::size_t f = 0; f < labels_.size(); ++f)
+      if (labels_[f] == segment)
+        return int(f);
+    return -1;
+  }
+
+  SegmentSamples picked_samples() const
+  {
+    std::vector<int> labels(labels_.size(), -1);
+    for (std::size_t f = 0; f < labels_.size(); ++f)
+      if (labels_[f] >= 0 && is_picked(labels_[f]))
+        labels[f] = 0;
+    return std::move(gather_segment_samples(*mesh_, labels, 1).front());
+  }
+
+  void push_snapshot(const char* what, std::vector<std::pair<int, CoordType>> positions)
+  {
+    undo_.push_back(
+        {what, labels_, read_segment_primitives(*mesh_, segment_count()), picked_, std::move(positions)});
+    if (undo_.size() > kMaxUndo)
+      undo_.pop_front();
+  }
+
+  // The recorded primitives under the new ids: a segment keeps its primitive when it is unchanged, i.e. its
+  // faces are exactly the faces of one old segment.
+  SegmentPrimitives carry_primitives(const std::vector<int>& labels) const
+  {
+    const int old_count = segment_count();
+    int new_count = 0;
+    for (int s : labels)
+      new_count = std::max(new_count, s + 1);
+    const SegmentPrimitives old = read_segment_primitives(*mesh_, old_count);
+    std::vector<int> image(std::size_t(old_count), -1), preimage(std::size_t(new_count), -1);
+    std::vector<char> whole_old(std::size_t(old_count), 1), whole_new(std::size_t(new_count), 1);
+    for (std::size_t f = 0; f < labels.size(); ++f) {
+      const int o = labels_[f], n = labels[f];
+      if (o < 0 || n < 0)
+        continue;
+      int& i = image[std::size_t(o)];
+      int& p = preimage[std::size_t(n)];
+      if (i >= 0 && i != n)
+        whole_old[std::size_t(o)] = 0;
+      if (p >= 0 && p != o)
+        whole_new[std::size_t(n)] = 0;
+      i = n;
+      p = o;
+    }
+    SegmentPrimitives carried(static_cast<std::size_t>(new_count));
+    for (int o = 0; o < old_count; ++o) {
+      const int n = image[std::size_t(o)];
+      if (n >= 0 && whole_old[std::size_t(o)] && whole_new[std::size_t(n)])
+        carried[std::size_t(n)] = old[std::size_t(o)];
+    }
+    return carried;
+  }
+
+  void store(const std::vector<int>& labels, const SegmentPrimitives& primitives)
+  {
+    labels_ = labels;
+    write_segment_ids(*mesh_, labels_);
+    if (std::any_of(primitives.begin(), primitives.end(), [](const auto& p) { return p.has_value(); }))
+      write_segment_primitives(*mesh_, primitives);
+    else
+      clear_segment_primitives(*mesh_);
+  }
+
+  void update_geometry()
+  {
+    // PerVertexNormalizedPerFace recomputes face normals unnormalised, so normalise them afterwards.
+    vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(*mesh_);
+    vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(*mesh_);
+    vcg::tri::UpdateBounding<MeshType>::Box(*mesh_);
+  }
+
+  MeshType* mesh_ = nullptr;
+  std::vector<int> labels_;
+  FaceAdjacency adjacency_;
+  std::vector<int> picked_;
+  std::optional<FitResult> fit_;
+  std::optional<Primitive> edited_;
+  Eigen::MatrixX3d fit_points_ = Eigen::MatrixX3d(0, 3);
+  std::deque<Snapshot> undo_;
+};
+
+} // namespace primitive_edit
+
+#endif

@@ -1,0 +1,36 @@
+// merge_segments.h: the paper's manual "mesh segments merge": several segments become one.
+//
+// Input:  segment_of_face (ids per face, -1 for none) and the ids of the segments to merge; negative ids and
+//         ids that occur in no face are ignored, repeats are harmless.
+// Output: every face of a listed segment gets the same id, other segments keep their faces; ids are compacted
+//         to 0..K-1 (order of first appearance). Returns K.
+// Complexity: O(F log L + L log L) for L listed ids.
+#ifndef PRIMITIVE_EDIT_MERGE_SEGMENTS_H
+#define PRIMITIVE_EDIT_MERGE_SEGMENTS_H
+
+#include "common/mesh/compact_segment_ids.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace primitive_edit {
+
+inline int merge_segments(std::vector<int>& segment_of_face, const std::vector<int>& segments)
+{
+  std::vector<int> listed(segments);
+  std::sort(listed.begin(), listed.end());
+  listed.erase(std::unique(listed.begin(), listed.end()), listed.end());
+  int target = -1;
+  for (int& s : segment_of_face) {
+    if (s < 0 || !std::binary_search(listed.begin(), listed.end(), s))
+      continue;
+    if (target < 0)
+      target = s;
+    s = target;
+  }
+  return compact_segment_ids(segment_of_face);
+}
+
+} // namespace primitive_edit
+
+#endif
