@@ -18,6 +18,7 @@
 #include <set>
 
 using namespace primitive_edit;
+using namespace primitive_edit::meshlab;
 
 namespace {
 
@@ -54,44 +55,38 @@ std::vector<int> segments_of_faces(const std::vector<int>& segment_of_face, cons
 
 } // namespace
 
-FilterSegmentPlugin::FilterSegmentPlugin()
-{
-  typeList << SEGMENT_AUTO << SEGMENT_AUTO_PRIMITIVE << SEGMENT_MERGE_SELECTED << SEGMENT_SPLIT_BY_PLANE << SEGMENT_SPLIT_BY_SELECTION
-           << SEGMENT_SELECT;
-  for (FilterIDType t : types())
-    actionList << new QAction(filterName(t), this);
-}
+QString SegmentFilters::pluginName() const { return "FilterSegment"; }
 
-QString FilterSegmentPlugin::pluginName() const { return "FilterSegment"; }
+namespace {
 
-QString FilterSegmentPlugin::filterName(FilterIDType filter) const
+QString segment_filter_name(int filter)
 {
   switch (filter) {
-  case SEGMENT_AUTO: return "Segment: Auto by Normal Angle";
-  case SEGMENT_AUTO_PRIMITIVE: return "Segment: Auto by Primitive Fit";
-  case SEGMENT_MERGE_SELECTED: return "Segment: Merge Selected";
-  case SEGMENT_SPLIT_BY_PLANE: return "Segment: Split by Plane";
-  case SEGMENT_SPLIT_BY_SELECTION: return "Segment: Split by Selection";
-  case SEGMENT_SELECT: return "Segment: Select Segment";
+  case SegmentFilters::SEGMENT_AUTO: return "Segment: Auto by Normal Angle";
+  case SegmentFilters::SEGMENT_AUTO_PRIMITIVE: return "Segment: Auto by Primitive Fit";
+  case SegmentFilters::SEGMENT_MERGE_SELECTED: return "Segment: Merge Selected";
+  case SegmentFilters::SEGMENT_SPLIT_BY_PLANE: return "Segment: Split by Plane";
+  case SegmentFilters::SEGMENT_SPLIT_BY_SELECTION: return "Segment: Split by Selection";
+  case SegmentFilters::SEGMENT_SELECT: return "Segment: Select Segment";
   }
   return "";
 }
 
-QString FilterSegmentPlugin::filterInfo(FilterIDType filter) const
+QString segment_filter_info(int filter)
 {
   const QString storage =
       "<br><br>The segment of each face is kept in the per-face attribute <i>SegmentId</i>, mirrored into face "
       "quality (save it with the PLY's face quality to keep it) and shown as face colour, neighbours in "
       "different colours. Ids are dense, from 0.";
   switch (filter) {
-  case SEGMENT_AUTO:
+  case SegmentFilters::SEGMENT_AUTO:
     return "Splits the mesh into segments by shape: a flood fill over adjacent faces, where two neighbouring "
            "faces join the same segment when the angle between their normals is below <i>Angle</i>. A smaller "
            "angle gives more segments.<br>Raw scans have noisy normals: they are first smoothed over the "
            "surface, and segments smaller than <i>Min Segment Size</i> are absorbed by the neighbour they "
            "share the longest border with.<br><br>See: <i>J. Yang, K. Oh, H.-I. Choi</i>, <b>\"Mesh Editing "
            "with an Intuitive User Interface\"</b>, section 2.1." + storage;
-  case SEGMENT_AUTO_PRIMITIVE:
+  case SegmentFilters::SEGMENT_AUTO_PRIMITIVE:
     return "Splits a scan into segments that each fit one primitive (plane, sphere, cylinder, cone, torus), for "
            "scans whose blurred edges and fillets change the normal so gradually that <i>Auto by Normal "
            "Angle</i> walks across them. From the flattest faces, a patch is fitted and grown over the faces "
@@ -99,107 +94,113 @@ QString FilterSegmentPlugin::filterInfo(FilterIDType filter) const
            "regions curved tighter than a seed patch (edges rounded by the scanner) are dissolved, and the "
            "faces left over go to the neighbouring region whose primitive is nearest, which splits a blurred "
            "edge at its bisector." + storage;
-  case SEGMENT_MERGE_SELECTED:
+  case SegmentFilters::SEGMENT_MERGE_SELECTED:
     return "Every segment touched by the face selection becomes one segment." + storage;
-  case SEGMENT_SPLIT_BY_PLANE:
+  case SegmentFilters::SEGMENT_SPLIT_BY_PLANE:
     return "Cuts a segment (or the segments of the selected faces) by a plane: the faces on each side, and "
            "each connected piece of them, become segments of their own. A face goes to the side of its "
            "centroid. The batch form of drawing a split line in the edit tool." + storage;
-  case SEGMENT_SPLIT_BY_SELECTION:
+  case SegmentFilters::SEGMENT_SPLIT_BY_SELECTION:
     return "The selected faces leave their segments and form one new segment." + storage;
-  case SEGMENT_SELECT:
+  case SegmentFilters::SEGMENT_SELECT:
     return "Selects the faces (and their vertices) of one segment, so that later filters act on it.";
   }
   return "";
 }
 
-MeshFilterInterface::FilterClass FilterSegmentPlugin::getClass(QAction* action)
+} // namespace
+
+std::vector<FilterDefinition> SegmentFilters::filters() const
 {
-  return ID(action) == SEGMENT_SELECT ? Selection : FaceColoring;
+  const int segments_changed = MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+  const auto def = [&](int id, const char* python_name, int menus, int post) {
+    FilterDefinition d;
+    d.id = id;
+    d.name = segment_filter_name(id);
+    d.python_name = python_name;
+    d.info = segment_filter_info(id);
+    d.menus = menus;
+    d.preconditions = MeshModel::MM_FACENUMBER;
+    d.postconditions = post;
+    return d;
+  };
+  return {
+      def(SEGMENT_AUTO, "segment_auto_by_normal_angle", MenuFaceColoring, segments_changed),
+      def(SEGMENT_AUTO_PRIMITIVE, "segment_auto_by_primitive_fit", MenuFaceColoring, segments_changed),
+      def(SEGMENT_MERGE_SELECTED, "segment_merge_selected", MenuFaceColoring, segments_changed),
+      def(SEGMENT_SPLIT_BY_PLANE, "segment_split_by_plane", MenuFaceColoring, segments_changed),
+      def(SEGMENT_SPLIT_BY_SELECTION, "segment_split_by_selection", MenuFaceColoring, segments_changed),
+      def(SEGMENT_SELECT, "segment_select", MenuSelection, MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_VERTFLAGSELECT),
+  };
 }
 
-int FilterSegmentPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
-
-int FilterSegmentPlugin::postCondition(QAction* action) const
-{
-  if (ID(action) == SEGMENT_SELECT)
-    return MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_VERTFLAGSELECT;
-  return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
-}
-
-void FilterSegmentPlugin::initParameterSet(QAction* action, MeshModel& m, RichParameterList& parlst)
+void SegmentFilters::parameters(int id, MeshDocument& document, ParameterList& parlst) const
 {
   const SegmentByNormalAngleParams defaults;
-  switch (ID(action)) {
+  switch (id) {
   case SEGMENT_AUTO:
-    parlst.addParam(RichFloat("Angle", float(defaults.angle_deg), "Angle (degrees)",
+    parlst.addFloat("Angle", defaults.angle_deg, "Angle (degrees)",
                               "Two neighbouring faces join the same segment when the angle between their "
-                              "(smoothed) normals is below this. Smaller gives more segments. Range 0-180."));
-    parlst.addParam(RichInt("NormalSmoothing", defaults.smoothing_iterations, "Normal Smoothing Steps",
+                              "(smoothed) normals is below this. Smaller gives more segments. Range 0-180.");
+    parlst.addInt("NormalSmoothing", defaults.smoothing_iterations, "Normal Smoothing Steps",
                             "Passes of face normal averaging over neighbours before the fill; scans from "
-                            "marching cubes need a few. 0 uses the raw face normals as in the paper."));
-    parlst.addParam(RichInt("MinSegmentFaces", defaults.min_segment_faces, "Min Segment Size (faces)",
+                            "marching cubes need a few. 0 uses the raw face normals as in the paper.");
+    parlst.addInt("MinSegmentFaces", defaults.min_segment_faces, "Min Segment Size (faces)",
                             "Segments with fewer faces are absorbed by the neighbouring segment they share "
-                            "the longest border with. 0 or 1 keeps every segment."));
+                            "the longest border with. 0 or 1 keeps every segment.");
     break;
   case SEGMENT_AUTO_PRIMITIVE: {
     const SegmentByPrimitiveGrowingParams growing;
-    parlst.addParam(RichFloat("Tolerance", float(growing.tolerance), "Tolerance",
+    parlst.addFloat("Tolerance", growing.tolerance, "Tolerance",
                               "A face joins a primitive when it is this close to it, in mesh units; 0 estimates "
-                              "it from the scan's roughness."));
-    parlst.addParam(RichFloat("NormalAngle", float(growing.normal_angle_deg), "Normal Angle (degrees)",
-                              "...and when its smoothed normal is within this angle of the primitive's."));
-    parlst.addParam(RichInt("SeedPatchFaces", growing.seed_patch_faces, "Seed Patch Size (faces)",
+                              "it from the scan's roughness.");
+    parlst.addFloat("NormalAngle", growing.normal_angle_deg, "Normal Angle (degrees)",
+                              "...and when its smoothed normal is within this angle of the primitive's.");
+    parlst.addInt("SeedPatchFaces", growing.seed_patch_faces, "Seed Patch Size (faces)",
                             "Faces of the patch each region starts from; regions curved tighter than such a "
-                            "patch are taken for rounded edges."));
-    parlst.addParam(RichInt("NormalSmoothing", growing.smoothing_iterations, "Normal Smoothing Steps",
-                            "Passes of face normal averaging against scan noise."));
+                            "patch are taken for rounded edges.");
+    parlst.addInt("NormalSmoothing", growing.smoothing_iterations, "Normal Smoothing Steps",
+                            "Passes of face normal averaging against scan noise.");
     break;
   }
   case SEGMENT_SPLIT_BY_PLANE:
-    parlst.addParam(RichInt("Segment", -1, "Segment",
-                            "Id of the segment to cut; -1 cuts the segments of the selected faces."));
-    parlst.addParam(RichPoint3f("PlanePoint", m.cm.bbox.Center(), "Plane Point", "A point of the cutting plane."));
-    parlst.addParam(RichPoint3f("PlaneNormal", Point3m(1, 0, 0), "Plane Normal",
-                                "The normal of the cutting plane; need not be unit length, must not be zero."));
+    parlst.addInt("Segment", -1, "Segment",
+                            "Id of the segment to cut; -1 cuts the segments of the selected faces.");
+    {
+      const Point3m centre = document.mm() != nullptr ? document.mm()->cm.bbox.Center() : Point3m(0, 0, 0);
+      parlst.addPosition("PlanePoint", Eigen::Vector3d(centre[0], centre[1], centre[2]), "Plane Point",
+                         "A point of the cutting plane.");
+    }
+    parlst.addDirection("PlaneNormal", Eigen::Vector3d::UnitX(), "Plane Normal",
+                        "The normal of the cutting plane; need not be unit length, must not be zero.");
     break;
   case SEGMENT_SELECT:
-    parlst.addParam(RichInt("Segment", 0, "Segment", "Id of the segment to select (0 to segment count - 1)."));
+    parlst.addInt("Segment", 0, "Segment", "Id of the segment to select (0 to segment count - 1).");
     break;
   default:
     break;
   }
 }
 
-bool FilterSegmentPlugin::fail(const QString& message)
+Status SegmentFilters::apply(int id, FilterRun& run)
 {
-  // meshlabserver prints only the log of a failed filter, the GUI shows errorMessage: say it in both.
-  errorMessage = message;
-  Log(GLLogStream::WARNING, qUtf8Printable(message));
-  return false;
-}
-
-bool FilterSegmentPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parlst,
-                                      vcg::CallBackPos* cb)
-{
-  MeshModel* mm = md.mm();
-  if (mm == nullptr)
-    return fail(filterName(action) + ": there is no mesh.");
-  const std::string problem = mesh_input_problem(mm->cm);
+  MeshModel& mm = run.mesh;
+  const std::string problem = mesh_input_problem(mm.cm);
+  const QString name = segment_filter_name(id);
   if (!problem.empty())
-    return fail(filterName(action) + ": " + QString::fromStdString(problem) + ".");
-  switch (ID(action)) {
-  case SEGMENT_AUTO: return autoSegment(*mm, parlst, cb);
-  case SEGMENT_AUTO_PRIMITIVE: return autoSegmentByPrimitives(*mm, parlst, cb);
-  case SEGMENT_MERGE_SELECTED: return mergeSelected(*mm);
-  case SEGMENT_SPLIT_BY_PLANE: return splitByPlane(*mm, parlst);
-  case SEGMENT_SPLIT_BY_SELECTION: return splitBySelection(*mm);
-  case SEGMENT_SELECT: return selectSegment(*mm, parlst);
+    return fail(name + ": " + QString::fromStdString(problem) + ".");
+  switch (id) {
+  case SEGMENT_AUTO: return autoSegment(mm, run.arguments, run);
+  case SEGMENT_AUTO_PRIMITIVE: return autoSegmentByPrimitives(mm, run.arguments, run);
+  case SEGMENT_MERGE_SELECTED: return mergeSelected(mm, run);
+  case SEGMENT_SPLIT_BY_PLANE: return splitByPlane(mm, run.arguments, run);
+  case SEGMENT_SPLIT_BY_SELECTION: return splitBySelection(mm, run);
+  case SEGMENT_SELECT: return selectSegment(mm, run.arguments, run);
   }
   return fail("Unknown filter.");
 }
 
-void FilterSegmentPlugin::storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face)
+void SegmentFilters::storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face)
 {
   mm.updateDataMask(MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR);
   write_segment_ids(mm.cm, segment_of_face);
@@ -207,7 +208,7 @@ void FilterSegmentPlugin::storeSegments(MeshModel& mm, const std::vector<int>& s
   clear_segment_primitives(mm.cm);
 }
 
-bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& parlst, vcg::CallBackPos* cb)
+Status SegmentFilters::autoSegment(MeshModel& mm, const Arguments& parlst, Run& run)
 {
   SegmentByNormalAngleParams params;
   params.angle_deg = parlst.getFloat("Angle");
@@ -228,17 +229,16 @@ bool FilterSegmentPlugin::autoSegment(MeshModel& mm, const RichParameterList& pa
   QElapsedTimer timer;
   timer.start();
   std::vector<int> segment_of_face;
-  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, cb);
+  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, nullptr /*MERGE: run.progress*/);
   storeSegments(mm, segment_of_face);
-  Log("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
+  run.logf("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
       "%d smoothing steps, min size %d faces, in %lld ms.",
       mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces,
       timer.elapsed());
-  return true;
+  return Status::success();
 }
 
-bool FilterSegmentPlugin::autoSegmentByPrimitives(MeshModel& mm, const RichParameterList& parlst,
-                                                  vcg::CallBackPos* cb)
+Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& parlst, Run& run)
 {
   const QString name = "Segment: Auto by Primitive Fit";
   SegmentByPrimitiveGrowingParams params;
@@ -259,51 +259,49 @@ bool FilterSegmentPlugin::autoSegmentByPrimitives(MeshModel& mm, const RichParam
   timer.start();
   std::vector<int> segment_of_face;
   SegmentByPrimitiveGrowingReport report;
-  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, cb);
+  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, nullptr /*MERGE: run.progress*/);
   storeSegments(mm, segment_of_face);
-  Log("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
+  run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
-  return true;
+  return Status::success();
 }
 
-bool FilterSegmentPlugin::mergeSelected(MeshModel& mm)
+Status SegmentFilters::mergeSelected(MeshModel& mm, Run& run)
 {
   const std::vector<int> faces = selected_faces(mm.cm);
   if (faces.empty())
     return fail("Segment: Merge Selected: no face is selected; select faces of the segments to merge.");
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
-    Log("Segment: Merge Selected: the mesh has no segments yet; all faces are one segment.");
+    run.logf("Segment: Merge Selected: the mesh has no segments yet; all faces are one segment.");
   const int before = count_segments(segment_of_face);
   const std::vector<int> segments = segments_of_faces(segment_of_face, faces);
   if (segments.size() < 2) {
-    Log("Segment: Merge Selected: the selection touches one segment only; nothing to merge (%d segments).", before);
-    return true;
+    run.logf("Segment: Merge Selected: the selection touches one segment only; nothing to merge (%d segments).", before);
+    return Status::success();
   }
   int moved = 0;
   for (int s : segment_of_face)
     moved += (s >= 0 && s != segments.front() && std::binary_search(segments.begin(), segments.end(), s));
   const int after = merge_segments(segment_of_face, segments);
   storeSegments(mm, segment_of_face);
-  Log("Segment: Merge Selected: %d segments merged into one, %d faces moved; %d segments before, %d after.",
+  run.logf("Segment: Merge Selected: %d segments merged into one, %d faces moved; %d segments before, %d after.",
       int(segments.size()), moved, before, after);
-  return true;
+  return Status::success();
 }
 
-bool FilterSegmentPlugin::splitByPlane(MeshModel& mm, const RichParameterList& parlst)
+Status SegmentFilters::splitByPlane(MeshModel& mm, const Arguments& parlst, Run& run)
 {
   const int segment = parlst.getInt("Segment");
-  const Point3m p = parlst.getPoint3m("PlanePoint");
-  const Point3m n = parlst.getPoint3m("PlaneNormal");
-  const Eigen::Vector3d point(p[0], p[1], p[2]);
-  Eigen::Vector3d normal(n[0], n[1], n[2]);
+  const Eigen::Vector3d point = parlst.getVector("PlanePoint");
+  Eigen::Vector3d normal = parlst.getVector("PlaneNormal");
   if (!point.allFinite() || !normal.allFinite() || normal.norm() < 1e-12)
     return fail("Segment: Split by Plane: the plane needs a finite point and a non-zero normal.");
   normal.normalize();
 
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
-    Log("Segment: Split by Plane: the mesh has no segments yet; all faces are one segment.");
+    run.logf("Segment: Split by Plane: the mesh has no segments yet; all faces are one segment.");
   const int before = count_segments(segment_of_face);
   std::vector<int> segments;
   if (segment == -1) {
@@ -320,28 +318,28 @@ bool FilterSegmentPlugin::splitByPlane(MeshModel& mm, const RichParameterList& p
   const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
   const int after = split_segments_by_plane(mm.cm, adjacency, segment_of_face, segments, point, normal);
   storeSegments(mm, segment_of_face);
-  Log("Segment: Split by Plane: %d segment(s) cut into %d pieces; %d segments before, %d after.",
+  run.logf("Segment: Split by Plane: %d segment(s) cut into %d pieces; %d segments before, %d after.",
       int(segments.size()), int(segments.size()) + after - before, before, after);
-  return true;
+  return Status::success();
 }
 
-bool FilterSegmentPlugin::splitBySelection(MeshModel& mm)
+Status SegmentFilters::splitBySelection(MeshModel& mm, Run& run)
 {
   const std::vector<int> faces = selected_faces(mm.cm);
   if (faces.empty())
     return fail("Segment: Split by Selection: no face is selected; select the faces of the new segment.");
   std::vector<int> segment_of_face;
   if (!load_segments(mm.cm, segment_of_face))
-    Log("Segment: Split by Selection: the mesh had no segments yet; the other faces are one segment.");
+    run.logf("Segment: Split by Selection: the mesh had no segments yet; the other faces are one segment.");
   const int before = count_segments(segment_of_face);
   const int after = move_faces_to_new_segment(segment_of_face, faces);
   storeSegments(mm, segment_of_face);
-  Log("Segment: Split by Selection: %d faces moved to a new segment; %d segments before, %d after.",
+  run.logf("Segment: Split by Selection: %d faces moved to a new segment; %d segments before, %d after.",
       int(faces.size()), before, after);
-  return true;
+  return Status::success();
 }
 
-bool FilterSegmentPlugin::selectSegment(MeshModel& mm, const RichParameterList& parlst)
+Status SegmentFilters::selectSegment(MeshModel& mm, const Arguments& parlst, Run& run)
 {
   const int segment = parlst.getInt("Segment");
   std::vector<int> segment_of_face;
@@ -368,6 +366,6 @@ bool FilterSegmentPlugin::selectSegment(MeshModel& mm, const RichParameterList& 
       f.ClearS();
     }
   }
-  Log("Segment: Select Segment: segment %d selected, %d faces.", segment, selected);
-  return true;
+  run.logf("Segment: Select Segment: segment %d selected, %d faces.", segment, selected);
+  return Status::success();
 }

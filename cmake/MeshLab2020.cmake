@@ -1,4 +1,7 @@
-# Building MeshLab 2020.09 plugins out of MeshLab's tree, against Debian's binary.
+# Building MeshLab 2020.09 plugins out of MeshLab's tree, against Debian's binary (meshlab package) and
+# the headers of its source (apt-get source meshlab, in .deps/). cmake/MeshLab2025.cmake defines the same
+# names for MeshLab 2025.07: meshlab_common, MESHLAB_TEST_PREFIX, MESHLAB_GUI, MESHLAB_BATCH and
+# add_meshlab_plugin().
 #
 # A build-tree prefix (${MESHLAB_TEST_PREFIX}) mirrors MeshLab's install layout: bin/ holds copies of
 # meshlab and meshlabserver, lib/x86_64-linux-gnu/meshlab/plugins/ holds links to the stock plugins
@@ -15,6 +18,7 @@ endif()
 find_package(Qt5 REQUIRED COMPONENTS Core Widgets OpenGL Xml XmlPatterns)
 find_package(GLEW REQUIRED)
 find_package(OpenGL REQUIRED)
+set(MESHLAB_API_DIR "${PROJECT_SOURCE_DIR}/meshlab_api/ml2020")
 
 add_library(meshlab_common SHARED IMPORTED GLOBAL)
 set_target_properties(meshlab_common PROPERTIES
@@ -41,7 +45,8 @@ foreach(p ${_stock_plugins})
     file(CREATE_LINK "${p}" "${MESHLAB_TEST_PLUGIN_DIR}/${_name}" SYMBOLIC)
   endif()
 endforeach()
-set(MESHLABSERVER "${MESHLAB_TEST_PREFIX}/bin/meshlabserver" CACHE INTERNAL "")
+# The batch runner the script tests drive: meshlabserver, with its command line (-i -o -m -s).
+set(MESHLAB_BATCH "${MESHLAB_TEST_PREFIX}/bin/meshlabserver" CACHE INTERNAL "")
 set(MESHLAB_GUI "${MESHLAB_TEST_PREFIX}/bin/meshlab" CACHE INTERNAL "")
 
 # add_meshlab_plugin(<name> <sources>...): a MeshLab plugin module, built into the test prefix.
@@ -51,6 +56,6 @@ function(add_meshlab_plugin name)
     AUTOMOC ON AUTORCC ON
     LIBRARY_OUTPUT_DIRECTORY "${MESHLAB_TEST_PLUGIN_DIR}")
   target_compile_options(${name} PRIVATE ${PRIMITIVE_EDIT_WARNINGS})
-  target_link_libraries(${name} PRIVATE meshlab_common primitive_edit_common)
+  target_link_libraries(${name} PRIVATE meshlab_common primitive_edit_meshlab_api primitive_edit_common)
   install(TARGETS ${name} LIBRARY DESTINATION "${MESHLAB_PLUGIN_INSTALL_DIR}")
 endfunction()
