@@ -27,7 +27,7 @@ set_target_properties(meshlab_common PROPERTIES
   INTERFACE_COMPILE_DEFINITIONS "MESHLAB_SCALAR=float;MESHLAB_VERSION=2025.07"
   INTERFACE_INCLUDE_DIRECTORIES "${MESHLAB_SOURCE_DIR}/src;${MESHLAB_SOURCE_DIR}/src/vcglib")
 target_link_libraries(meshlab_common INTERFACE
-  Qt5::Core Qt5::Widgets Qt5::OpenGL Qt5::Xml Qt5::Network GLEW::GLEW OpenGL::GL)
+  Qt5::Core Qt5::Widgets Qt5::OpenGL Qt5::Xml Qt5::Network GLEW::GLEW OpenGL::GL Eigen3::Eigen)
 
 set(MESHLAB_TEST_PREFIX "${CMAKE_BINARY_DIR}/meshlab-prefix")
 set(MESHLAB_TEST_PLUGIN_DIR "${MESHLAB_TEST_PREFIX}/plugins")

@@ -9,6 +9,7 @@
 #include <cmath>
 
 using namespace primitive_edit;
+using namespace primitive_edit::meshlab;
 
 namespace {
 
@@ -49,80 +50,64 @@ vcg::CallBackPos* progress_range(vcg::CallBackPos* cb, int from, int to)
 
 } // namespace
 
-FilterMeasureAccuracyPlugin::FilterMeasureAccuracyPlugin()
+QString MeasureAccuracyFilters::pluginName() const { return "FilterMeasureAccuracy"; }
+
+std::vector<FilterDefinition> MeasureAccuracyFilters::filters() const
 {
-  typeList << MEASURE_ACCURACY;
-  for (FilterIDType tt : types())
-    actionList << new QAction(filterName(tt), this);
+  FilterDefinition d;
+  d.id = MEASURE_ACCURACY;
+  d.name = "Measure: Accuracy Against Reference";
+  d.python_name = "measure_accuracy_against_reference";
+  d.info = "Measures how close a mesh is to a reference (CAD) mesh, as in section 3 of Yang, Oh, Choi, "
+           "<i>Mesh Editing with an Intuitive User Interface</i>: samples are spread uniformly by area over "
+           "the measured mesh, the shortest distance of each to the reference surface is found, and the "
+           "accuracy is the share of samples within the tolerance (the error permission). The log gives that "
+           "share, the mean, RMS and max distance and a histogram. Optionally writes the distance of each "
+           "vertex to the reference into the vertex quality of the measured mesh and colours it as a "
+           "deviation map (blue on the reference, green at the tolerance, red from twice the tolerance). "
+           "Both layers' transformation matrices are taken into account. The meshes must be roughly "
+           "aligned: far samples are slow to measure.";
+  d.menus = MenuMeasure;
+  d.postconditions = MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+  d.two_meshes = true;
+  return {d};
 }
 
-QString FilterMeasureAccuracyPlugin::pluginName() const { return "FilterMeasureAccuracy"; }
-
-QString FilterMeasureAccuracyPlugin::filterName(FilterIDType filter) const
-{
-  return filter == MEASURE_ACCURACY ? "Measure: Accuracy Against Reference" : "";
-}
-
-QString FilterMeasureAccuracyPlugin::filterInfo(FilterIDType filter) const
-{
-  if (filter != MEASURE_ACCURACY)
-    return "";
-  return "Measures how close a mesh is to a reference (CAD) mesh, as in section 3 of Yang, Oh, Choi, "
-         "<i>Mesh Editing with an Intuitive User Interface</i>: samples are spread uniformly by area over "
-         "the measured mesh, the shortest distance of each to the reference surface is found, and the "
-         "accuracy is the share of samples within the tolerance (the error permission). The log gives that "
-         "share, the mean, RMS and max distance and a histogram. Optionally writes the distance of each "
-         "vertex to the reference into the vertex quality of the measured mesh and colours it as a "
-         "deviation map (blue on the reference, green at the tolerance, red from twice the tolerance). "
-         "Both layers' transformation matrices are taken into account. The meshes must be roughly "
-         "aligned: far samples are slow to measure.";
-}
-
-int FilterMeasureAccuracyPlugin::postCondition(QAction*) const
-{
-  return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
-}
-
-void FilterMeasureAccuracyPlugin::initParameterSet(QAction*, MeshDocument& md, RichParameterList& parlst)
+void MeasureAccuracyFilters::parameters(int, MeshDocument& md, ParameterList& parlst) const
 {
   MeshModel* reference = md.mm();
-  for (MeshModel* m : md.meshList)
+  for (MeshModel* m : document_meshes(md))
     if (m != md.mm()) {
       reference = m;
       break;
     }
-  parlst.addParam(RichMesh("MeasuredMesh", md.mm(), &md, "Measured Mesh",
+  const int measured_id = md.mm() != nullptr ? md.mm()->id() : 0;
+  const int reference_id = reference != nullptr ? reference->id() : 0;
+  parlst.addMesh("MeasuredMesh", measured_id, "Measured Mesh",
                            "The mesh whose accuracy is measured (e.g. the scan, or the edited scan). "
-                           "The samples are taken on its surface."));
-  parlst.addParam(RichMesh("ReferenceMesh", reference, &md, "Reference Mesh",
+                           "The samples are taken on its surface.");
+  parlst.addMesh("ReferenceMesh", reference_id, "Reference Mesh",
                            "The reference surface (e.g. the CAD model) the samples' distances are measured to. "
-                           "Must be a different layer with faces."));
-  parlst.addParam(RichInt("Samples", 1000000, "Samples",
+                           "Must be a different layer with faces.");
+  parlst.addInt("Samples", 1000000, "Samples",
                           "Number of points sampled uniformly by area on the measured mesh (1 to 100000000). "
-                          "The paper uses one million."));
-  parlst.addParam(RichFloat("Tolerance", 0.42f, "Tolerance",
+                          "The paper uses one million.");
+  parlst.addFloat("Tolerance", 0.42, "Tolerance",
                             "The error permission, in mesh units (mm for the paper's part): a sample is "
-                            "accurate when its distance to the reference is at most this. Must be positive."));
-  parlst.addParam(RichInt("Seed", 0, "Random Seed",
-                          "Seed of the sampling (0 or more): the same seed gives the same samples and figures."));
-  parlst.addParam(RichBool("DeviationMap", false, "Colour Deviation Map",
+                            "accurate when its distance to the reference is at most this. Must be positive.");
+  parlst.addInt("Seed", 0, "Random Seed",
+                          "Seed of the sampling (0 or more): the same seed gives the same samples and figures.");
+  parlst.addBool("DeviationMap", false, "Colour Deviation Map",
                            "Also store each vertex's distance to the reference in the vertex quality of the "
                            "measured mesh and colour it: blue on the reference, green at the tolerance, red at "
-                           "twice the tolerance and beyond."));
+                           "twice the tolerance and beyond.");
 }
 
-bool FilterMeasureAccuracyPlugin::fail(const QString& message)
+Status MeasureAccuracyFilters::apply(int, FilterRun& run)
 {
-  // meshlabserver prints only the log of a failed filter, the GUI shows errorMessage: say it in both.
-  errorMessage = message;
-  Log(GLLogStream::WARNING, qUtf8Printable(message));
-  return false;
-}
-
-bool FilterMeasureAccuracyPlugin::applyFilter(QAction* action, MeshDocument&, const RichParameterList& parlst,
-                                              vcg::CallBackPos* cb)
-{
-  const QString name = filterName(action);
+  const QString name = "Measure: Accuracy Against Reference";
+  const FilterArguments& parlst = run.arguments;
+  vcg::CallBackPos* cb = nullptr; /*MERGE: run.progress*/
   MeshModel* measured = parlst.getMesh("MeasuredMesh");
   MeshModel* reference = parlst.getMesh("ReferenceMesh");
   const int sample_count = parlst.getInt("Samples");
@@ -175,19 +160,19 @@ bool FilterMeasureAccuracyPlugin::applyFilter(QAction* action, MeshDocument&, co
       !vertex_distances(measured->cm, index, vertex_distance, error, measured_to_world, progress_range(cb, 80, 100)))
     return fail(name + ": deviation map of '" + measured->label() + "': " + QString::fromStdString(error) + ".");
 
-  Log("Accuracy: %.1f%% of %d samples within %g (mean %.3f, RMS %.3f, max %.3f)", 100.0 * r.within_tolerance_share,
+  run.logf("Accuracy: %.1f%% of %d samples within %g (mean %.3f, RMS %.3f, max %.3f)", 100.0 * r.within_tolerance_share,
       int(r.sample_count), tolerance, r.mean, r.rms, r.max);
-  Log("Accuracy: measured '%s' against reference '%s' (%d faces indexed, %d degenerate skipped), seed %d",
+  run.logf("Accuracy: measured '%s' against reference '%s' (%d faces indexed, %d degenerate skipped), seed %d",
       qUtf8Printable(measured->label()), qUtf8Printable(reference->label()), int(index.triangle_count()),
       int(index.skipped_face_count()), seed);
   for (int b = 0; b <= kAccuracyHistogramBins; ++b) {
     const double share = double(r.histogram[size_t(b)]) / double(r.sample_count);
     const QString bar(int(std::lround(40.0 * share)), QChar('#'));
     if (b < kAccuracyHistogramBins)
-      Log("Accuracy histogram [%.3f, %.3f): %5.1f%% %s", b * r.histogram_bin_width, (b + 1) * r.histogram_bin_width,
+      run.logf("Accuracy histogram [%.3f, %.3f): %5.1f%% %s", b * r.histogram_bin_width, (b + 1) * r.histogram_bin_width,
           100.0 * share, qUtf8Printable(bar));
     else
-      Log("Accuracy histogram >= %.3f: %5.1f%% %s", b * r.histogram_bin_width, 100.0 * share, qUtf8Printable(bar));
+      run.logf("Accuracy histogram >= %.3f: %5.1f%% %s", b * r.histogram_bin_width, 100.0 * share, qUtf8Printable(bar));
   }
 
   if (deviation_map) {
@@ -197,10 +182,9 @@ bool FilterMeasureAccuracyPlugin::applyFilter(QAction* action, MeshDocument&, co
         v.Q() = Scalarm(vertex_distance(Eigen::Index(vcg::tri::Index(measured->cm, v))));
     // Reversed range: blue at 0, green at the tolerance, red at twice the tolerance and beyond.
     vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(measured->cm, Scalarm(2.0 * tolerance), Scalarm(0.0));
-    Log("Accuracy: deviation map written to the vertex quality and colour of '%s' (max vertex distance %.3f)",
+    run.logf("Accuracy: deviation map written to the vertex quality and colour of '%s' (max vertex distance %.3f)",
         qUtf8Printable(measured->label()), vertex_distance.maxCoeff());
   }
-  return true;
+  return Status::success();
 }
 
-MESHLAB_PLUGIN_NAME_EXPORTER(FilterMeasureAccuracyPlugin)

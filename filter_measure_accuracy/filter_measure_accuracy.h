@@ -2,37 +2,24 @@
 // Oh, Choi, "Mesh Editing with an Intuitive User Interface"): samples the measured mesh uniformly by area,
 // measures each sample's shortest distance to the reference (CAD) mesh and logs the share within the
 // tolerance, mean, RMS, max and a histogram; optionally paints a deviation map on the measured mesh.
-// The geometry is in common/mesh/sample_surface_uniform.h and common/measure/measure_accuracy.h.
+// The geometry is in common/mesh/sample_surface_uniform.h and common/measure/measure_accuracy.h. Written
+// once for every MeshLab generation (meshlab_api/filter_suite.h); filter_measure_accuracy_plugin.h makes it
+// a plugin of the generation being built.
 #ifndef PRIMITIVE_EDIT_FILTER_MEASURE_ACCURACY_H
 #define PRIMITIVE_EDIT_FILTER_MEASURE_ACCURACY_H
 
-#include <common/interfaces.h>
+#include "meshlab_api/filter_suite.h"
+#include "plugin_api/mesh_document.h"
 
-class FilterMeasureAccuracyPlugin : public QObject, public MeshFilterInterface
+class MeasureAccuracyFilters : public primitive_edit::meshlab::FilterSuite
 {
-  Q_OBJECT
-  MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
-  Q_INTERFACES(MeshFilterInterface)
-
 public:
   enum { MEASURE_ACCURACY };
 
-  FilterMeasureAccuracyPlugin();
-
   QString pluginName() const override;
-  using MeshFilterInterface::filterName;
-  using MeshFilterInterface::filterInfo;
-  QString filterName(FilterIDType filter) const override;
-  QString filterInfo(FilterIDType filter) const override;
-  FilterClass getClass(QAction*) override { return Measure; }
-  FILTER_ARITY filterArity(QAction*) const override { return FIXED; }
-  int postCondition(QAction*) const override;
-  using MeshFilterInterface::initParameterSet;
-  void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parlst) override;
-  bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parlst, vcg::CallBackPos* cb) override;
-
-private:
-  bool fail(const QString& message);
+  std::vector<primitive_edit::meshlab::FilterDefinition> filters() const override;
+  void parameters(int id, MeshDocument& document, primitive_edit::meshlab::ParameterList& out) const override;
+  primitive_edit::Status apply(int id, primitive_edit::meshlab::FilterRun& run) override;
 };
 
 #endif

@@ -28,6 +28,7 @@
 #include <cmath>
 
 using namespace primitive_edit;
+using namespace primitive_edit::meshlab;
 
 namespace {
 
@@ -55,6 +56,16 @@ QJsonObject json_parameters(const Primitive& p)
   return {};
 }
 
+QString primitive_filter_name(int filter)
+{
+  switch (filter) {
+  case PrimitiveFitFilters::PRIMITIVE_FIT_SEGMENT: return "Primitive: Fit Segment";
+  case PrimitiveFitFilters::PRIMITIVE_SNAP_SEGMENT: return "Primitive: Snap Segment";
+  case PrimitiveFitFilters::PRIMITIVE_FIT_ALL_SEGMENTS: return "Primitive: Fit All Segments";
+  }
+  return "";
+}
+
 void update_geometry(MeshModel& mm)
 {
   // PerVertexNormalizedPerFace recomputes face normals unnormalised: normalise them after it.
@@ -73,26 +84,9 @@ QString snap_summary(const SnapReport& r)
 
 } // namespace
 
-FilterPrimitiveFitPlugin::FilterPrimitiveFitPlugin()
-{
-  typeList << PRIMITIVE_FIT_SEGMENT << PRIMITIVE_SNAP_SEGMENT << PRIMITIVE_FIT_ALL_SEGMENTS;
-  for (FilterIDType t : types())
-    actionList << new QAction(filterName(t), this);
-}
+QString PrimitiveFitFilters::pluginName() const { return "FilterPrimitiveFit"; }
 
-QString FilterPrimitiveFitPlugin::pluginName() const { return "FilterPrimitiveFit"; }
-
-QString FilterPrimitiveFitPlugin::filterName(FilterIDType filter) const
-{
-  switch (filter) {
-  case PRIMITIVE_FIT_SEGMENT: return "Primitive: Fit Segment";
-  case PRIMITIVE_SNAP_SEGMENT: return "Primitive: Snap Segment";
-  case PRIMITIVE_FIT_ALL_SEGMENTS: return "Primitive: Fit All Segments";
-  }
-  return "";
-}
-
-QString FilterPrimitiveFitPlugin::filterInfo(FilterIDType filter) const
+std::vector<FilterDefinition> PrimitiveFitFilters::filters() const
 {
   const QString method =
       "<br><br>Fitting starts algebraically (a sphere by the normalised algebraic fit that the type-constrained "
@@ -101,102 +95,87 @@ QString FilterPrimitiveFitPlugin::filterInfo(FilterIDType filter) const
       "estimated by a quadric fit when absent) and is refined on orthogonal distances, with outliers near the "
       "segment's border down-weighted. The segments come from "
       "the <i>Segment:</i> filters.";
-  switch (filter) {
-  case PRIMITIVE_FIT_SEGMENT:
-    return "Fits a primitive (plane, sphere, cylinder, cone or torus; Auto picks the type) to a segment and "
+  const auto def = [](int id, const char* python_name, int menus, int post, const QString& info) {
+    FilterDefinition d;
+    d.id = id;
+    d.name = primitive_filter_name(id);
+    d.python_name = python_name;
+    d.info = info;
+    d.menus = menus;
+    d.preconditions = MeshModel::MM_FACENUMBER;
+    d.postconditions = post;
+    return d;
+  };
+  const int moved = MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
+  return {
+    def(PRIMITIVE_FIT_SEGMENT, "primitive_fit_segment", MenuMeasure, MeshModel::MM_NONE,
+        "Fits a primitive (plane, sphere, cylinder, cone or torus; Auto picks the type) to a segment and "
            "logs its parameters (radius, axis, centre, half-angle...) with the RMS and maximum residual. Moves "
-           "nothing." + method;
-  case PRIMITIVE_SNAP_SEGMENT:
-    return "Fits a primitive to a segment, replaces the parameters you give (a value of 0 keeps the fitted "
+        "nothing." + method),
+    def(PRIMITIVE_SNAP_SEGMENT, "primitive_snap_segment", MenuSmoothing | MenuMeasure, moved,
+        "Fits a primitive to a segment, replaces the parameters you give (a value of 0 keeps the fitted "
            "one) and moves the segment's vertices to their closest point on the edited primitive: entering "
            "radius 5 where 4.8 was fitted makes a 5 mm hole. A cone's half-angle is changed about its apex.<br>"
            "With <i>Sharp Edges</i>, vertices shared with segments snapped before go to the intersection of "
            "the primitives (or their common point at corners), so blurred edges come out sharp; triangles are "
-           "kept from flipping." + method;
-  case PRIMITIVE_FIT_ALL_SEGMENTS:
-    return "Fits every segment with the type that explains it best (residual with a penalty for extra "
+        "kept from flipping." + method),
+    def(PRIMITIVE_FIT_ALL_SEGMENTS, "primitive_fit_all_segments", MenuSmoothing | MenuMeasure, moved,
+        "Fits every segment with the type that explains it best (residual with a penalty for extra "
            "parameters); segments no primitive fits within the tolerance are free-form and left alone. "
            "Optionally snaps every fitted segment, with sharp edges and corners, and exports the primitives "
-           "as JSON (id, type, parameters, RMS, point count, area) for CAD." + method;
-  }
-  return "";
+        "as JSON (id, type, parameters, RMS, point count, area) for CAD." + method),
+  };
 }
 
-MeshFilterInterface::FilterClass FilterPrimitiveFitPlugin::getClass(QAction* action)
+void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parlst) const
 {
-  return ID(action) == PRIMITIVE_FIT_SEGMENT ? Measure : FilterClass(Smoothing | Measure);
-}
-
-int FilterPrimitiveFitPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
-
-int FilterPrimitiveFitPlugin::postCondition(QAction* action) const
-{
-  if (ID(action) == PRIMITIVE_FIT_SEGMENT)
-    return MeshModel::MM_NONE;
-  return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
-}
-
-void FilterPrimitiveFitPlugin::initParameterSet(QAction* action, MeshModel&, RichParameterList& parlst)
-{
-  const int id = ID(action);
   if (id == PRIMITIVE_FIT_SEGMENT || id == PRIMITIVE_SNAP_SEGMENT) {
-    parlst.addParam(RichInt("Segment", -1, "Segment",
-                            "Id of the segment; -1 takes the selected faces."));
-    parlst.addParam(RichEnum("Type", 0, kTypeNames, "Type",
-                             "The primitive to fit; Auto picks the type that explains the points best."));
+    parlst.addInt("Segment", -1, "Segment",
+                            "Id of the segment; -1 takes the selected faces.");
+    parlst.addEnum("Type", 0, kTypeNames, "Type",
+                             "The primitive to fit; Auto picks the type that explains the points best.");
   }
   if (id == PRIMITIVE_SNAP_SEGMENT) {
-    parlst.addParam(RichFloat("Radius", 0, "Radius",
-                              "New radius of a sphere or cylinder; 0 keeps the fitted radius."));
-    parlst.addParam(RichFloat("Angle", 0, "Cone Half-Angle (degrees)",
-                              "New half-angle of a cone, between 0 and 90, about its apex; 0 keeps the fitted one."));
-    parlst.addParam(RichFloat("MajorRadius", 0, "Major Radius",
-                              "New major radius of a torus (axis to tube centre); 0 keeps the fitted one."));
-    parlst.addParam(RichFloat("MinorRadius", 0, "Minor Radius",
-                              "New minor (tube) radius of a torus; 0 keeps the fitted one."));
+    parlst.addFloat("Radius", 0, "Radius",
+                              "New radius of a sphere or cylinder; 0 keeps the fitted radius.");
+    parlst.addFloat("Angle", 0, "Cone Half-Angle (degrees)",
+                              "New half-angle of a cone, between 0 and 90, about its apex; 0 keeps the fitted one.");
+    parlst.addFloat("MajorRadius", 0, "Major Radius",
+                              "New major radius of a torus (axis to tube centre); 0 keeps the fitted one.");
+    parlst.addFloat("MinorRadius", 0, "Minor Radius",
+                              "New minor (tube) radius of a torus; 0 keeps the fitted one.");
   }
   if (id == PRIMITIVE_FIT_ALL_SEGMENTS) {
-    parlst.addParam(RichFloat("Tolerance", 0, "Fit Tolerance",
+    parlst.addFloat("Tolerance", 0, "Fit Tolerance",
                               "Largest RMS residual, in mesh units, for a segment to count as a primitive; "
                               "0 uses the larger of 1% of each segment's size and 3 times the scan's "
-                              "roughness (the RMS of the surface about local planes, estimated here)."));
-    parlst.addParam(RichBool("Snap", true, "Snap Segments",
-                             "Move every fitted segment onto its primitive."));
-    parlst.addParam(RichString("Export", "", "Export JSON",
-                               "File to write the fitted primitives to, as JSON; empty writes nothing."));
+                              "roughness (the RMS of the surface about local planes, estimated here).");
+    parlst.addBool("Snap", true, "Snap Segments",
+                             "Move every fitted segment onto its primitive.");
+    parlst.addString("Export", "", "Export JSON",
+                               "File to write the fitted primitives to, as JSON; empty writes nothing.");
   }
   if (id != PRIMITIVE_FIT_SEGMENT)
-    parlst.addParam(RichBool("SharpEdges", true, "Sharp Edges",
+    parlst.addBool("SharpEdges", true, "Sharp Edges",
                              "Vertices shared by snapped segments go to the intersection of their primitives "
-                             "(edges) or their common point (corners)."));
+                             "(edges) or their common point (corners).");
 }
 
-bool FilterPrimitiveFitPlugin::fail(const QString& message)
+Status PrimitiveFitFilters::apply(int id, FilterRun& run)
 {
-  // meshlabserver prints only the log of a failed filter, the GUI shows errorMessage: say it in both.
-  errorMessage = message;
-  Log(GLLogStream::WARNING, qUtf8Printable(message));
-  return false;
-}
-
-bool FilterPrimitiveFitPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parlst,
-                                           vcg::CallBackPos* cb)
-{
-  MeshModel* mm = md.mm();
-  if (mm == nullptr)
-    return fail(filterName(action) + ": there is no mesh.");
-  const std::string problem = mesh_input_problem(mm->cm);
+  MeshModel& mm = run.mesh;
+  const std::string problem = mesh_input_problem(mm.cm);
   if (!problem.empty())
-    return fail(filterName(action) + ": " + QString::fromStdString(problem) + ".");
-  switch (ID(action)) {
-  case PRIMITIVE_FIT_SEGMENT: return fitOrSnapSegment(*mm, parlst, false);
-  case PRIMITIVE_SNAP_SEGMENT: return fitOrSnapSegment(*mm, parlst, true);
-  case PRIMITIVE_FIT_ALL_SEGMENTS: return fitAllSegments(*mm, parlst, cb);
+    return fail(primitive_filter_name(id) + ": " + QString::fromStdString(problem) + ".");
+  switch (id) {
+  case PRIMITIVE_FIT_SEGMENT: return fitOrSnapSegment(mm, run.arguments, false, run);
+  case PRIMITIVE_SNAP_SEGMENT: return fitOrSnapSegment(mm, run.arguments, true, run);
+  case PRIMITIVE_FIT_ALL_SEGMENTS: return fitAllSegments(mm, run.arguments, run);
   }
   return fail("Unknown filter.");
 }
 
-bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParameterList& parlst, bool snap)
+Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& parlst, bool snap, Run& run)
 {
   const QString name = snap ? "Primitive: Snap Segment" : "Primitive: Fit Segment";
   CMeshO& m = mm.cm;
@@ -252,11 +231,11 @@ bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParamet
     if (!fit.ok)
       return fail(name + ": " + what + " cannot be fitted: " + QString::fromStdString(fit.message));
   }
-  Log("%s: %s (%d points, area %.6g): %s; RMS %.4g, max residual %.4g.", qUtf8Printable(name),
+  run.logf("%s: %s (%d points, area %.6g): %s; RMS %.4g, max residual %.4g.", qUtf8Printable(name),
       qUtf8Printable(what), fit.point_count, samples.area, describe_primitive(fit.primitive).c_str(), fit.rms,
       fit.max_residual);
   if (!snap)
-    return true;
+    return Status::success();
 
   Primitive edited = fit.primitive;
   const double radius = parlst.getFloat("Radius"), angle = parlst.getFloat("Angle");
@@ -291,13 +270,14 @@ bool FilterPrimitiveFitPlugin::fitOrSnapSegment(MeshModel& mm, const RichParamet
     write_segment_primitives(m, recorded);
   }
   update_geometry(mm);
-  Log("%s: %s snapped onto %s; %s.", qUtf8Printable(name), qUtf8Printable(what),
+  run.logf("%s: %s snapped onto %s; %s.", qUtf8Printable(name), qUtf8Printable(what),
       describe_primitive(edited).c_str(), qUtf8Printable(snap_summary(report)));
-  return true;
+  return Status::success();
 }
 
-bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameterList& parlst, vcg::CallBackPos* cb)
+Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parlst, Run& run)
 {
+  const Progress& cb = run.progress;
   const QString name = "Primitive: Fit All Segments";
   CMeshO& m = mm.cm;
   const double tolerance = parlst.getFloat("Tolerance");
@@ -320,12 +300,12 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
   options.tolerance = tolerance;
   if (tolerance == 0) {
     options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
-    Log("%s: estimated surface roughness %.4g (RMS about local planes): segments within %.4g RMS of a primitive "
+    run.logf("%s: estimated surface roughness %.4g (RMS about local planes): segments within %.4g RMS of a primitive "
         "(or 1%% of their size) are fitted.",
         qUtf8Printable(name), options.roughness, 3 * options.roughness);
   }
   const std::vector<AutoFitResult> fits = fit_segments_auto(samples, options, 0, [&](int done, int total) {
-    if (cb != nullptr)
+    if (cb)
       cb(snap ? 80 * done / total : 100 * done / total, "Fitting primitives");
   });
   SegmentPrimitives primitives(static_cast<size_t>(count));
@@ -367,22 +347,22 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
   for (int s = 0; s < count && s < 100; ++s) {
     const AutoFitResult& fit = fits[size_t(s)];
     if (fit.ok)
-      Log("  segment %d: %s; RMS %.4g, %d points", s, describe_primitive(fit.best.primitive).c_str(), fit.best.rms,
+      run.logf("  segment %d: %s; RMS %.4g, %d points", s, describe_primitive(fit.best.primitive).c_str(), fit.best.rms,
           fit.best.point_count);
     else
-      Log("  segment %d: free-form (%s)", s, fit.message.c_str());
+      run.logf("  segment %d: free-form (%s)", s, fit.message.c_str());
   }
   const int fitted = std::accumulate(per_type, per_type + kPrimitiveTypeCount, 0);
-  Log("%s: %d of %d segments fitted (%.1f%% of the area): %d planes, %d spheres, %d cylinders, %d cones, %d tori; "
+  run.logf("%s: %d of %d segments fitted (%.1f%% of the area): %d planes, %d spheres, %d cylinders, %d cones, %d tori; "
       "%d free-form. Fitting took %lld ms.",
       qUtf8Printable(name), fitted, count, total_area > 0 ? 100.0 * fitted_area / total_area : 0.0, per_type[0],
       per_type[1], per_type[2], per_type[3], per_type[4], count - fitted, fit_ms);
   if (!path.isEmpty())
-    Log("%s: primitives exported to %s.", qUtf8Printable(name), qUtf8Printable(path));
+    run.logf("%s: primitives exported to %s.", qUtf8Printable(name), qUtf8Printable(path));
   if (!snap)
-    return true;
+    return Status::success();
 
-  if (cb != nullptr)
+  if (cb)
     cb(85, "Snapping segments");
   timer.restart();
   SnapOptions snap_options;
@@ -390,7 +370,7 @@ bool FilterPrimitiveFitPlugin::fitAllSegments(MeshModel& mm, const RichParameter
   const SnapReport report = snap_segments(m, segment_of_face, primitives, snap_options);
   write_segment_primitives(m, primitives);
   update_geometry(mm);
-  Log("%s: %d segments snapped; %s. Snapping took %lld ms.", qUtf8Printable(name), fitted,
+  run.logf("%s: %d segments snapped; %s. Snapping took %lld ms.", qUtf8Printable(name), fitted,
       qUtf8Printable(snap_summary(report)), timer.elapsed());
-  return true;
+  return Status::success();
 }

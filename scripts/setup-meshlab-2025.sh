@@ -16,8 +16,15 @@ version="2025.07~dfsg-4"
 orig="meshlab_2025.07~dfsg.orig.tar.xz"
 cache="${PRIMITIVE_EDIT_CACHE_DIR:-$HOME/.cache/primitive-edit}/meshlab-2025.07"
 jobs=$(nproc)
-# The stock plugins the tests use: PLY/OBJ/STL input and output, the default decorations, selection.
-plugins="meshlabplugins/io_base;meshlabplugins/decorate_base;meshlabplugins/filter_select;meshlabplugins/edit_select"
+# The stock plugins the tests use: PLY/OBJ/STL input and output, the default decorations, selection,
+# and Conditional Face Selection (filter_func, with Debian's muparser).
+plugins="meshlabplugins/io_base;meshlabplugins/decorate_base;meshlabplugins/filter_select;meshlabplugins/edit_select;meshlabplugins/filter_func"
+# Optional libraries come from Debian or not at all: MeshLab's own downloads cannot reach the network here.
+no_downloads=""
+for lib in BOOST CGAL EMBREE LEVMAR LIB3DS LIB3MF LIBE57 LIBIGL MUPARSER NEXUS OPENCTM QHULL STRUCTURE_SYNTH TINYGLTF \
+           U3D XERCES; do
+  no_downloads="$no_downloads -DMESHLAB_ALLOW_DOWNLOAD_SOURCE_$lib=OFF"
+done
 stamp="$cache/build/.primitive-edit-built-$(echo "$plugins" | md5sum | cut -c1-8)"
 
 link_into_deps() {
@@ -32,7 +39,7 @@ if [ -f "$stamp" ] && [ -x "$cache/build/src/distrib/meshlab" ]; then
 fi
 
 packages=(cmake g++ qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev libglu1-mesa-dev mesa-common-dev
-          xz-utils dpkg-dev)
+          libmuparser-dev xz-utils dpkg-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -66,7 +73,8 @@ if [ ! -f "$cache/src/ML_VERSION" ]; then
 fi
 
 echo "setup-2025: building MeshLab 2025.07 in $cache/build (about 9 min on 2 cores, once)"
-cmake -S "$cache/src" -B "$cache/build" -DCMAKE_BUILD_TYPE=Release -DMESHLAB_BUILD_STRICT=OFF -DMESHLAB_ALLOW_OPTIONAL_EXTERNAL_LIBRARIES=OFF \
+# shellcheck disable=SC2086
+cmake -S "$cache/src" -B "$cache/build" -DCMAKE_BUILD_TYPE=Release -DMESHLAB_BUILD_STRICT=OFF -DMESHLAB_ALLOW_OPTIONAL_EXTERNAL_LIBRARIES=ON $no_downloads \
       -DMESHLAB_PLUGINS="$plugins" -Wno-dev >"$cache/configure.log" 2>&1 \
   || { tail -40 "$cache/configure.log" >&2; exit 1; }
 cmake --build "$cache/build" -j"$jobs" >"$cache/build.log" 2>&1 || { tail -60 "$cache/build.log" >&2; exit 1; }
