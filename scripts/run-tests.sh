@@ -1,28 +1,45 @@
 #!/usr/bin/env bash
-# Sets up a Debian 12 machine (packages, MeshLab source) and runs every test:
-#  1. Release build: unit tests, meshlabserver script tests and the GUI test (MeshLab under Xvfb);
-#  2. the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer;
-#  3. the libFuzzer target over common/ for 60 s (clang, ASan + UBSan).
-# Usage: scripts/run-tests.sh            (build trees: build/, build-sanitize/, build-fuzz/)
+# Sets up a Debian 12 machine and runs every test, for both MeshLab generations:
+#  1. MeshLab 2020.09 (Debian's package), Release: unit tests, layout check, meshlabserver script tests
+#     and the GUI test under Xvfb;
+#  2. MeshLab 2025.07 (built from Debian's source, cached outside the clone), Release: the same script
+#     tests through tools/meshlab_runner, the GUI test and the layout check;
+#  3. the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer;
+#  4. the libFuzzer target over common/ for 60 s (clang, ASan + UBSan).
+# Usage: scripts/run-tests.sh     (build trees: build/, build-2025/, build-sanitize/, build-fuzz/)
+# PRIMITIVE_EDIT_CACHE_DIR: where MeshLab 2025.07 is built (default ~/.cache/primitive-edit).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 jobs=$(nproc)
+stage() { echo "=== $1 ($(date -u +%H:%M:%S), $SECONDS s since start)"; }
 
+stage "setup: Debian packages and MeshLab 2020.09's source"
 scripts/setup-debian.sh
+stage "setup: MeshLab 2025.07 from Debian's source (cached)"
+scripts/setup-meshlab-2025.sh
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
+stage "MeshLab 2020.09: build and test"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPRIMITIVE_EDIT_MESHLAB=2020.09 -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure
 
-# The plugins run inside Debian's uninstrumented MeshLab: sanitizers cover common/ through the unit tests.
+stage "MeshLab 2025.07: build and test"
+cmake -S . -B build-2025 -DCMAKE_BUILD_TYPE=Release -DPRIMITIVE_EDIT_MESHLAB=2025.07 -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
+cmake --build build-2025 -j"$jobs"
+ctest --test-dir build-2025 --output-on-failure
+
+# The plugins run inside uninstrumented MeshLabs: sanitizers cover common/ through the unit tests.
+stage "unit tests under ASan + UBSan"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE= -DCMAKE_CXX_FLAGS="-O1 -g1" -DPRIMITIVE_EDIT_SANITIZE=ON \
       -DPRIMITIVE_EDIT_BUILD_PLUGINS=OFF -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
 
+stage "fuzz"
 CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE= -DPRIMITIVE_EDIT_BUILD_FUZZ=ON \
       -DPRIMITIVE_EDIT_BUILD_PLUGINS=OFF -DPRIMITIVE_EDIT_BUILD_TESTS=OFF -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
 cmake --build build-fuzz -j"$jobs"
 ctest --test-dir build-fuzz --output-on-failure
+stage "all tests passed"

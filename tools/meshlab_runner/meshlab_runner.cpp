@@ -4,7 +4,9 @@
 // command line, and saves the current mesh with the attributes asked for (face quality keeps segment ids).
 //
 //   meshlab_runner -i in.ply [-i more.ply] [-s script.mlx] [-f "Filter Name" [-a Name=Value]...]
-//                  [-o out.ply [-m fq vc ...]] [-l log.txt] [-p plugin_dir] | --list
+//                  [-o out.ply [-m fq vc ...]] [-l log.txt] [-p plugin_dir]
+//   meshlab_runner --list [-i in.ply]       every filter's name, PyMeshLab name (and parameters)
+//   meshlab_runner -d filters.txt           meshlabserver's filter dump ("\section fN NAME" lines)
 //
 // Scripts are meshlabserver's .mlx: each <Param name=... value=.../> sets the parameter of that name; the
 // value is read by the parameter's own type, so scripts written for 2020.09 (RichPoint3f, RichSaveFile)
@@ -34,7 +36,7 @@ namespace {
 struct Options
 {
   std::vector<QString> inputs;
-  QString script, output, log_file, plugin_dir, filter;
+  QString script, output, log_file, plugin_dir, filter, dump;
   std::vector<std::pair<QString, QString>> arguments;  // -a Name=Value for -f
   QStringList mask;
   bool list = false;
@@ -95,6 +97,7 @@ bool parse_options(int argc, char** argv, Options& o)
     else if (a == "-l" && next(v)) o.log_file = v;
     else if (a == "-p" && next(v)) o.plugin_dir = v;
     else if (a == "-f" && next(v)) o.filter = v;
+    else if (a == "-d" && next(v)) o.dump = v;
     else if (a == "-a" && next(v)) {
       const int eq = v.indexOf('=');
       if (eq <= 0)
@@ -106,7 +109,7 @@ bool parse_options(int argc, char** argv, Options& o)
     } else if (a == "--list") o.list = true;
     else return false;
   }
-  return o.list || (!o.inputs.empty() && (!o.script.isEmpty() || !o.filter.isEmpty() || !o.output.isEmpty()));
+  return o.list || !o.dump.isEmpty() || (!o.inputs.empty() && (!o.script.isEmpty() || !o.filter.isEmpty() || !o.output.isEmpty()));
 }
 
 // The filter of that menu name or PyMeshLab name, and its plugin.
@@ -272,6 +275,21 @@ void list_filters(PluginManager& pm, MeshDocument& md)
     }
 }
 
+// meshlabserver -d's format, as far as scripts read it: one "\section fN NAME" line a filter.
+bool dump_filters(PluginManager& pm, const QString& path)
+{
+  QFile file(path);
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+    return false;
+  QTextStream out(&file);
+  int n = 0;
+  for (FilterPlugin* p : pm.filterPluginIterator())
+    for (QAction* a : p->actions())
+      out << "\\section f" << n++ << " " << p->filterName(a) << "\n"
+          << "PyMeshLab: " << p->pythonFilterName(a) << "\n\n";
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -283,7 +301,7 @@ int main(int argc, char** argv)
   Options o;
   if (!parse_options(argc, argv, o)) {
     std::fprintf(stderr, "usage: meshlab_runner -i in.ply [-i ...] [-s script.mlx] [-f FILTER [-a Name=Value]...] "
-                         "[-o out.ply [-m fq vc ...]] [-l log] [-p plugin_dir] | --list [-i in.ply]\n");
+                         "[-o out.ply [-m fq vc ...]] [-l log] [-p plugin_dir] | --list [-i in.ply] | -d dump.txt\n");
     return 1;
   }
   if (!o.log_file.isEmpty())
@@ -296,6 +314,8 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "meshlab_runner: %s\n", e.what());
     return 1;
   }
+  if (!o.dump.isEmpty())
+    return dump_filters(pm, o.dump) ? 0 : 1;
   MeshDocument md;
   Log log(md.Log, o.log_file);
   for (const QString& input : o.inputs) {
