@@ -8,8 +8,13 @@
 # its stock plugins and shaders, and our plugins.
 
 set(MESHLAB_2025_BUILD_DIR "${MESHLAB_2025_DIR}/build" CACHE PATH "MeshLab 2025.07 build tree")
-set(MESHLAB_PLUGIN_INSTALL_DIR "lib/meshlab/plugins" CACHE STRING
-    "Plugin folder relative to the install prefix (MeshLab 2025.07 built with its default layout looks in <prefix>/lib/meshlab/plugins)")
+# Every MeshLab 2025.07 (AppImage, distribution package, source build) also loads the plugins in the
+# user's MeshLabExtraPlugins folder (QStandardPaths' AppDataLocation of organisation VCG, application
+# MeshLab_64bit_fp), subfolder 2025.07: `cmake --install` puts them there unless told otherwise.
+# A system-wide MeshLab built with its default layout looks in <prefix>/lib/meshlab/plugins:
+# -DMESHLAB_PLUGIN_INSTALL_DIR=that.
+set(MESHLAB_PLUGIN_INSTALL_DIR "$ENV{HOME}/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/2025.07" CACHE PATH
+    "Where cmake --install puts the plugins (absolute, or relative to CMAKE_INSTALL_PREFIX)")
 foreach(_f "${MESHLAB_2025_BUILD_DIR}/src/distrib/libmeshlab-common.so" "${MESHLAB_2025_BUILD_DIR}/src/distrib/meshlab")
   if(NOT EXISTS "${_f}")
     message(FATAL_ERROR "${_f} not found: run scripts/setup-meshlab-2025.sh")
