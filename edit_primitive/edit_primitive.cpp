@@ -42,7 +42,7 @@ QString EditPrimitivePlugin::Info()
          "sphere, cylinder, cone or torus, edit its parameters and snap the segment onto it.";
 }
 
-void EditPrimitivePlugin::suggestedRenderingData(MeshModel& m, MLRenderingData& dt)
+void EditPrimitivePlugin::renderingData(MeshModel& m, MLRenderingData& dt)
 {
   if (m.cm.fn == 0)
     return;
@@ -58,24 +58,24 @@ void EditPrimitivePlugin::suggestedRenderingData(MeshModel& m, MLRenderingData& 
   dt.set(MLRenderingData::PR_SOLID, atts);
 }
 
-bool EditPrimitivePlugin::StartEdit(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context)
+bool EditPrimitivePlugin::start(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context)
 {
-  setLog(&md.Log);
+  attachLog(md);
   if (md.mm() == nullptr) {
-    Log(GLLogStream::WARNING, "Primitive Edit: there is no mesh to edit.");
+    logWarning("Primitive Edit: there is no mesh to edit.");
     return false;
   }
-  return StartEdit(*md.mm(), gla, context);
+  return startOn(*md.mm(), gla, context);
 }
 
-bool EditPrimitivePlugin::StartEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context)
+bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context)
 {
   if (gla == nullptr || context == nullptr)
     return false;
   const EditOutcome attached = session_.attach(m.cm, had_face_quality_);
   if (!attached.ok) {
-    Log(GLLogStream::WARNING, "Primitive Edit: cannot edit %s: %s.", qUtf8Printable(m.label()),
-        attached.message.c_str());
+    logWarning(QString::asprintf("Primitive Edit: cannot edit %s: %s.", qUtf8Printable(m.label()),
+                                 attached.message.c_str()));
     return false;
   }
   if (!GLExtensionsManager::initializeGLextensions_notThrowing()) {
@@ -112,12 +112,13 @@ bool EditPrimitivePlugin::StartEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDa
   gla->setCursor(Qt::CrossCursor);
   // The keys of the tool (M, F, Enter, ...) go to the view.
   gla->setFocus();
-  Log("Primitive Edit: editing %s (%d faces): %s.", qUtf8Printable(m.label()), m.cm.fn, attached.message.c_str());
+  logLine(QString::asprintf("Primitive Edit: editing %s (%d faces): %s.", qUtf8Printable(m.label()), m.cm.fn,
+                            attached.message.c_str()));
   refresh(false);
   return true;
 }
 
-void EditPrimitivePlugin::EndEdit(MeshModel&, GLArea* gla, MLSceneGLSharedDataContext*)
+void EditPrimitivePlugin::end(MeshModel&, GLArea* gla, MLSceneGLSharedDataContext*)
 {
   session_.detach();
   if (dock_ != nullptr)
@@ -132,22 +133,22 @@ void EditPrimitivePlugin::EndEdit(MeshModel&, GLArea* gla, MLSceneGLSharedDataCo
   have_camera_ = false;
 }
 
-void EditPrimitivePlugin::LayerChanged(MeshDocument& md, MeshModel& old_model, GLArea* gla,
-                                       MLSceneGLSharedDataContext* context)
+void EditPrimitivePlugin::changeLayer(MeshDocument& md, MeshModel& old_model, GLArea* gla,
+                                      MLSceneGLSharedDataContext* context)
 {
   if (md.mm() == &old_model && model_ == &old_model && session_.attached())
     return;
-  EndEdit(old_model, gla, context);
-  StartEdit(md, gla, context);
+  end(old_model, gla, context);
+  start(md, gla, context);
 }
 
 void EditPrimitivePlugin::report(bool ok, const QString& what, const std::string& message)
 {
   const QString text = QString("Primitive Edit: %1: %2.").arg(what, QString::fromStdString(message));
   if (ok)
-    Log(qUtf8Printable(text));
+    logLine(text);
   else
-    Log(GLLogStream::WARNING, qUtf8Printable(text));
+    logWarning(text);
   if (panel_ != nullptr)
     panel_->setStatus(text);
 }
@@ -304,13 +305,13 @@ void EditPrimitivePlugin::pickAt(const Eigen::Vector2d& at, bool additive)
   }
   const bool hit = session_.pick(face, additive);
   if (hit)
-    Log("Primitive Edit: picked %s.", qUtf8Printable(pickedText()));
+    logLine(QString("Primitive Edit: picked %1.").arg(pickedText()));
   else if (!additive)
-    Log("Primitive Edit: no segment there; picks cleared.");
+    logLine("Primitive Edit: no segment there; picks cleared.");
   refresh(false);
 }
 
-void EditPrimitivePlugin::mousePressEvent(QMouseEvent* event, MeshModel&, GLArea* gla)
+void EditPrimitivePlugin::mousePress(QMouseEvent* event, MeshModel&, GLArea* gla)
 {
   if (event->button() != Qt::LeftButton || gla_ == nullptr)
     return;
@@ -320,7 +321,7 @@ void EditPrimitivePlugin::mousePressEvent(QMouseEvent* event, MeshModel&, GLArea
   line_start_ = line_end_ = to_gl(gla, event->pos());
 }
 
-void EditPrimitivePlugin::mouseMoveEvent(QMouseEvent* event, MeshModel&, GLArea* gla)
+void EditPrimitivePlugin::mouseMove(QMouseEvent* event, MeshModel&, GLArea* gla)
 {
   if (!pressed_ || !drawing_line_ || gla_ == nullptr)
     return;
@@ -328,7 +329,7 @@ void EditPrimitivePlugin::mouseMoveEvent(QMouseEvent* event, MeshModel&, GLArea*
   gla->update();
 }
 
-void EditPrimitivePlugin::mouseReleaseEvent(QMouseEvent* event, MeshModel&, GLArea* gla)
+void EditPrimitivePlugin::mouseRelease(QMouseEvent* event, MeshModel&, GLArea* gla)
 {
   if (!pressed_ || event->button() != Qt::LeftButton || gla_ == nullptr)
     return;
@@ -352,7 +353,7 @@ void EditPrimitivePlugin::mouseReleaseEvent(QMouseEvent* event, MeshModel&, GLAr
   }
 }
 
-void EditPrimitivePlugin::keyPressEvent(QKeyEvent* event, MeshModel&, GLArea*)
+void EditPrimitivePlugin::keyPress(QKeyEvent* event, MeshModel&, GLArea*)
 {
   if (gla_ == nullptr)
     return;
@@ -381,7 +382,7 @@ void EditPrimitivePlugin::keyPressEvent(QKeyEvent* event, MeshModel&, GLArea*)
   event->accept();
 }
 
-void EditPrimitivePlugin::Decorate(MeshModel& m, GLArea* gla)
+void EditPrimitivePlugin::draw(MeshModel& m, GLArea* gla)
 {
   if (model_ == nullptr || &m != model_)
     return;
@@ -428,7 +429,7 @@ void EditPrimitivePlugin::Decorate(MeshModel& m, GLArea* gla)
     glPopMatrix();
     glMatrixMode(GL_MODELVIEW);
   }
-  RealTimeLog("Primitive Edit", m.shortName(),
+  logRealTime("Primitive Edit", m.shortName(),
               "Click: pick a segment, Shift+click: add/remove<br>Ctrl+drag: split by a line<br>"
               "M merge, 0-5 type (Auto, Plane, Sphere, Cylinder, Cone, Torus), F fit, R edit radius,<br>"
               "Enter apply, Ctrl+Z / U undo, S segment; Esc: rotate the view");

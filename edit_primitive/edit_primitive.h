@@ -7,7 +7,8 @@
 
 #include "common/pipeline/primitive_edit_session.h"
 
-#include <common/interfaces.h>
+#include "plugin_api/edit_plugin.h"
+#include "plugin_api/mesh_document.h"
 
 #include <QPoint>
 
@@ -16,32 +17,30 @@
 class PrimitiveEditPanel;
 class QDockWidget;
 
-class EditPrimitivePlugin : public QObject, public MeshEditInterface
+class EditPrimitivePlugin : public primitive_edit::meshlab::EditToolAdapter
 {
   Q_OBJECT
-  Q_INTERFACES(MeshEditInterface)
 
 public:
   EditPrimitivePlugin();
   ~EditPrimitivePlugin() override;
 
   static QString Info();
-  void suggestedRenderingData(MeshModel& m, MLRenderingData& dt) override;
-  using MeshEditInterface::EndEdit;
+  void renderingData(MeshModel& m, MLRenderingData& dt) override;
   // Sets the log before anything happens (MeshLab sets it only when drawing), then starts on the current mesh.
-  bool StartEdit(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context) override;
-  bool StartEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
-  void EndEdit(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  bool start(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  void end(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
   // MeshLab also reports a layer change when the current layer stays the same (e.g. after a save): the
   // session, with its undo steps, is kept then; a real change restarts the tool on the new layer.
-  void LayerChanged(MeshDocument& md, MeshModel& old_model, GLArea* gla, MLSceneGLSharedDataContext* context) override;
-  void Decorate(MeshModel& m, GLArea* gla) override;
-  void mousePressEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
-  void mouseMoveEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
-  void mouseReleaseEvent(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
-  void keyPressEvent(QKeyEvent* event, MeshModel& m, GLArea* gla) override;
+  void changeLayer(MeshDocument& md, MeshModel& old_model, GLArea* gla, MLSceneGLSharedDataContext* context) override;
+  void draw(MeshModel& m, GLArea* gla) override;
+  void mousePress(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void mouseMove(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void mouseRelease(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
+  void keyPress(QKeyEvent* event, MeshModel& m, GLArea* gla) override;
 
 private:
+  bool startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context);
   void segment();
   void merge();
   void fit();

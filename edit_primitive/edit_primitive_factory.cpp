@@ -2,23 +2,15 @@
 
 #include "edit_primitive.h"
 
+// A shortcut makes the tool reachable without finding its toolbar button (and scriptable in GUI tests).
 EditPrimitiveFactory::EditPrimitiveFactory()
+    : EditPluginAdapter("EditPrimitive", QIcon(":/edit_primitive/images/edit_primitive.png"), "Primitive Edit",
+                        "Primitive Edit: pick, merge and split segments, fit primitives, edit their parameters and "
+                        "snap segments onto them (Ctrl+Shift+P)",
+                        QKeySequence(Qt::CTRL + Qt::SHIFT + Qt::Key_P))
 {
-  edit_ = new QAction(QIcon(":/edit_primitive/images/edit_primitive.png"), "Primitive Edit", this);
-  edit_->setToolTip("Primitive Edit: pick, merge and split segments, fit primitives, edit their parameters and "
-                    "snap segments onto them (Ctrl+Shift+P)");
-  // A shortcut makes the tool reachable without finding its toolbar button (and scriptable in GUI tests).
-  edit_->setShortcut(QKeySequence(Qt::CTRL + Qt::SHIFT + Qt::Key_P));
-  edit_->setCheckable(true);
 }
 
-QList<QAction*> EditPrimitiveFactory::actions() const { return {edit_}; }
+primitive_edit::meshlab::EditToolAdapter* EditPrimitiveFactory::createTool() { return new EditPrimitivePlugin(); }
 
-MeshEditInterface* EditPrimitiveFactory::getMeshEditInterface(QAction* action)
-{
-  return action == edit_ ? new EditPrimitivePlugin() : nullptr;
-}
-
-QString EditPrimitiveFactory::getEditToolDescription(QAction*) { return EditPrimitivePlugin::Info(); }
-
-MESHLAB_PLUGIN_NAME_EXPORTER(EditPrimitiveFactory)
+QString EditPrimitiveFactory::description() const { return EditPrimitivePlugin::Info(); }

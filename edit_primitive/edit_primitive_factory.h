@@ -1,25 +1,20 @@
-// edit_primitive_factory.h: registers the Primitive Edit tool with MeshLab (one toolbar/Edit menu action).
+// edit_primitive_factory.h: registers the Primitive Edit tool with MeshLab (one toolbar/Edit menu action),
+// for the MeshLab generation being built (plugin_api/edit_plugin.h).
 #ifndef PRIMITIVE_EDIT_EDIT_PRIMITIVE_FACTORY_H
 #define PRIMITIVE_EDIT_EDIT_PRIMITIVE_FACTORY_H
 
-#include <common/interfaces.h>
+#include "plugin_api/edit_plugin.h"
 
-class EditPrimitiveFactory : public QObject, public MeshEditInterfaceFactory
+class EditPrimitiveFactory : public primitive_edit::meshlab::EditPluginAdapter
 {
   Q_OBJECT
-  MESHLAB_PLUGIN_IID_EXPORTER(MESH_EDIT_INTERFACE_FACTORY_IID)
-  Q_INTERFACES(MeshEditInterfaceFactory)
+  PRIMITIVE_EDIT_EDIT_PLUGIN
 
 public:
   EditPrimitiveFactory();
-  ~EditPrimitiveFactory() override = default;
 
-  QList<QAction*> actions() const override;
-  MeshEditInterface* getMeshEditInterface(QAction* action) override;
-  QString getEditToolDescription(QAction* action) override;
-
-private:
-  QAction* edit_ = nullptr;
+  primitive_edit::meshlab::EditToolAdapter* createTool() override;
+  QString description() const override;
 };
 
 #endif

@@ -96,6 +96,14 @@ class Session:
             raise RuntimeError("could not start Xvfb")
         self.env["DISPLAY"] = self.display
         self.env.pop("WAYLAND_DISPLAY", None)
+        # A home of the test's own: no settings of earlier runs, and MeshLab 2025.07's first-start question
+        # about anonymous statistics already answered (2020.09 reads the same file and ignores the key).
+        home = os.path.join(self.workdir, "home")
+        shutil.rmtree(home, ignore_errors=True)
+        os.makedirs(os.path.join(home, ".config", "VCG"))
+        with open(os.path.join(home, ".config", "VCG", "MeshLab_64bit_fp.conf"), "w") as conf:
+            conf.write("[General]\ninformativeShown=true\n")
+        self.env["HOME"] = home
         self.env["LIBGL_ALWAYS_SOFTWARE"] = "1"
         self.log = open(os.path.join(self.workdir, "meshlab.log"), "w")
         self.meshlab = subprocess.Popen([self.meshlab_path, mesh], env=self.env, stdout=self.log,
