@@ -1,5 +1,6 @@
 // bench_fit: time of fit_primitive_auto on segments of 1k, 10k, 100k and 1M points, and of each fit type
 // on 100k points (median of 5 runs). Data: noisy (sigma = 0.5% of the size) patches with normals.
+#include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "../tests/unit/test_fit_data.h"
 
@@ -40,13 +41,13 @@ Sample noisy(const Primitive& p, const Patch& patch, int n)
 int main()
 {
   Patch cyl_patch;
-  cyl_patch.sweep = M_PI;
+  cyl_patch.sweep = primitive_edit::kPi;
   cyl_patch.extent = 3;
   Patch cone_patch;
   cone_patch.near = 1;
   cone_patch.far = 2;
   Patch cap;
-  cap.cap = M_PI / 3;
+  cap.cap = primitive_edit::kPi / 3;
   const std::vector<std::pair<Primitive, Patch>> shapes = {
       {make_plane({0, 0, 0}, {0.2, 0.1, 1}), Patch()},
       {make_sphere({1, 0, 0}, 1), cap},

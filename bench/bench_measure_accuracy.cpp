@@ -1,6 +1,7 @@
 // bench_measure_accuracy: the paper's accuracy measurement at its size, 1M samples against a 1M-face
 // reference (a tessellated torus), timing sampling, index build and distance queries (median of 3 runs),
 // for several grid densities and for a measured surface that is offset from the reference.
+#include "common/base/constants.h"
 #include "common/measure/measure_accuracy.h"
 #include "common/mesh/sample_surface_uniform.h"
 
@@ -22,7 +23,6 @@ class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3f, vcg::vertex
 class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
 class BMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Torus around z of major radius R and tube radius r: rings x sides quads, 2 triangles each.
 void make_torus(BMesh& m, double R, double r, int rings, int sides)
@@ -31,7 +31,7 @@ void make_torus(BMesh& m, double R, double r, int rings, int sides)
   vcg::tri::Allocator<BMesh>::AddVertices(m, size_t(rings) * size_t(sides));
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < sides; ++j) {
-      const double u = 2.0 * kPi * i / rings, v = 2.0 * kPi * j / sides;
+      const double u = 2.0 * primitive_edit::kPi * i / rings, v = 2.0 * primitive_edit::kPi * j / sides;
       m.vert[size_t(i) * sides + j].P() =
           vcg::Point3f(float((R + r * std::cos(v)) * std::cos(u)), float((R + r * std::cos(v)) * std::sin(u)),
                        float(r * std::sin(v)));

@@ -1,5 +1,7 @@
 #include "primitive_edit_panel.h"
 
+#include "common/base/constants.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -17,7 +19,7 @@ using primitive_edit::PrimitiveType;
 
 namespace {
 
-constexpr double kDegrees = 57.29577951308232;
+constexpr double kDegrees = primitive_edit::degrees_from_radians(1.0);  // degrees per radian
 constexpr double kBig = 1e9;
 
 } // namespace

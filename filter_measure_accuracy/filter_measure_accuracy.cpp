@@ -25,29 +25,6 @@ Eigen::Affine3d layer_to_world(const CMeshO& m)
   return a;
 }
 
-// A progress callback that maps a sub-task's 0-100 onto [from, to] of the filter's bar. vcg::CallBackPos
-// is a plain function pointer, so the range lives in statics (MeshLab runs one filter at a time).
-struct ProgressRange
-{
-  static vcg::CallBackPos* outer;
-  static int from, to;
-  static bool call(const int pos, const char* str)
-  {
-    return outer == nullptr || outer(from + (to - from) * pos / 100, str);
-  }
-};
-vcg::CallBackPos* ProgressRange::outer = nullptr;
-int ProgressRange::from = 0;
-int ProgressRange::to = 100;
-
-vcg::CallBackPos* progress_range(vcg::CallBackPos* cb, int from, int to)
-{
-  ProgressRange::outer = cb;
-  ProgressRange::from = from;
-  ProgressRange::to = to;
-  return &ProgressRange::call;
-}
-
 } // namespace
 
 QString MeasureAccuracyFilters::pluginName() const { return "FilterMeasureAccuracy"; }
@@ -107,7 +84,7 @@ Status MeasureAccuracyFilters::apply(int, FilterRun& run)
 {
   const QString name = "Measure: Accuracy Against Reference";
   const FilterArguments& parlst = run.arguments;
-  vcg::CallBackPos* cb = nullptr; /*MERGE: run.progress*/
+  const Progress& progress = run.progress;
   MeshModel* measured = parlst.getMesh("MeasuredMesh");
   MeshModel* reference = parlst.getMesh("ReferenceMesh");
   const int sample_count = parlst.getInt("Samples");
@@ -135,8 +112,7 @@ Status MeasureAccuracyFilters::apply(int, FilterRun& run)
   const Eigen::Affine3d measured_to_world = layer_to_world(measured->cm);
   const Eigen::Affine3d reference_to_world = layer_to_world(reference->cm);
 
-  if (cb != nullptr)
-    cb(0, "Sampling the measured mesh");
+  report_progress(progress, 0, "Sampling the measured mesh");
   std::string error;
   Eigen::MatrixX3d samples =
       sample_surface_uniform(measured->cm, Eigen::Index(sample_count), std::uint64_t(seed), &error);
@@ -144,20 +120,19 @@ Status MeasureAccuracyFilters::apply(int, FilterRun& run)
     return fail(name + ": measured mesh '" + measured->label() + "': " + QString::fromStdString(error) + ".");
   samples = (samples * measured_to_world.linear().transpose()).rowwise() + measured_to_world.translation().transpose();
 
-  if (cb != nullptr)
-    cb(5, "Indexing the reference mesh");
+  report_progress(progress, 5, "Indexing the reference mesh");
   SurfaceDistanceIndex index(reference->cm, reference_to_world);
   if (!index.ok())
     return fail(name + ": reference mesh '" + reference->label() + "': " + QString::fromStdString(index.error()) + ".");
 
   const AccuracyReport r =
-      measure_accuracy(samples, index, tolerance, false, progress_range(cb, 10, deviation_map ? 80 : 100));
+      measure_accuracy(samples, index, tolerance, false, progress_range(progress, 10, deviation_map ? 80 : 100));
   if (!r.ok)
     return fail(name + ": " + QString::fromStdString(r.error) + ".");
 
   Eigen::VectorXd vertex_distance;
   if (deviation_map &&
-      !vertex_distances(measured->cm, index, vertex_distance, error, measured_to_world, progress_range(cb, 80, 100)))
+      !vertex_distances(measured->cm, index, vertex_distance, error, measured_to_world, progress_range(progress, 80, 100)))
     return fail(name + ": deviation map of '" + measured->label() + "': " + QString::fromStdString(error) + ".");
 
   run.logf("Accuracy: %.1f%% of %d samples within %g (mean %.3f, RMS %.3f, max %.3f)", 100.0 * r.within_tolerance_share,

@@ -1,5 +1,6 @@
 #include "filter_primitive_fit.h"
 
+#include "common/base/constants.h"
 #include "common/mesh/count_segments.h"
 #include "common/base/describe_primitive.h"
 #include "common/mesh/estimate_surface_roughness.h"
@@ -32,8 +33,6 @@ using namespace primitive_edit::meshlab;
 
 namespace {
 
-constexpr double kDegrees = 57.29577951308232;
-
 // Type parameter: index 0 is Auto, then PrimitiveType in order.
 const QStringList kTypeNames = {"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"};
 
@@ -48,7 +47,7 @@ QJsonObject json_parameters(const Primitive& p)
   case PrimitiveType::Cylinder:
     return {{"axis_point", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"radius", p.radius}};
   case PrimitiveType::Cone:
-    return {{"apex", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"half_angle_deg", p.half_angle * kDegrees}};
+    return {{"apex", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"half_angle_deg", degrees_from_radians(p.half_angle)}};
   case PrimitiveType::Torus:
     return {{"center", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"major_radius", p.radius},
             {"minor_radius", p.minor_radius}};
@@ -248,7 +247,7 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
     if (angle >= 90)
       return fail(name + QString(": a cone half-angle must be below 90 degrees, not %1.").arg(angle));
     if (edited.type == PrimitiveType::Cone)
-      edited.half_angle = angle / kDegrees;
+      edited.half_angle = radians_from_degrees(angle);
   }
   if (edited.type == PrimitiveType::Torus) {
     edited.radius = major > 0 ? major : edited.radius;
@@ -277,7 +276,7 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
 
 Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parlst, Run& run)
 {
-  const Progress& cb = run.progress;
+  const Progress& progress = run.progress;
   const QString name = "Primitive: Fit All Segments";
   CMeshO& m = mm.cm;
   const double tolerance = parlst.getFloat("Tolerance");
@@ -304,10 +303,8 @@ Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parls
         "(or 1%% of their size) are fitted.",
         qUtf8Printable(name), options.roughness, 3 * options.roughness);
   }
-  const std::vector<AutoFitResult> fits = fit_segments_auto(samples, options, 0, [&](int done, int total) {
-    if (cb)
-      cb(snap ? 80 * done / total : 100 * done / total, "Fitting primitives");
-  });
+  const std::vector<AutoFitResult> fits =
+      fit_segments_auto(samples, options, 0, progress_range(progress, 0, snap ? 80 : 100));
   SegmentPrimitives primitives(static_cast<size_t>(count));
   int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
   double fitted_area = 0, total_area = 0;
@@ -362,8 +359,7 @@ Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parls
   if (!snap)
     return Status::success();
 
-  if (cb)
-    cb(85, "Snapping segments");
+  report_progress(progress, 85, "Snapping segments");
   timer.restart();
   SnapOptions snap_options;
   snap_options.sharp_edges = parlst.getBool("SharpEdges");

@@ -229,7 +229,7 @@ Status SegmentFilters::autoSegment(MeshModel& mm, const Arguments& parlst, Run& 
   QElapsedTimer timer;
   timer.start();
   std::vector<int> segment_of_face;
-  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, nullptr /*MERGE: run.progress*/);
+  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, run.progress);
   storeSegments(mm, segment_of_face);
   run.logf("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
       "%d smoothing steps, min size %d faces, in %lld ms.",
@@ -259,7 +259,7 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   timer.start();
   std::vector<int> segment_of_face;
   SegmentByPrimitiveGrowingReport report;
-  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, nullptr /*MERGE: run.progress*/);
+  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, run.progress);
   storeSegments(mm, segment_of_face);
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());

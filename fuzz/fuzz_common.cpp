@@ -10,6 +10,7 @@
 // dense segment ids with every live face labelled, fits with ok == true give valid primitives with finite
 // residuals, snap_segments never writes a non-finite coordinate nor moves a vertex of an unsnapped segment,
 // accuracy reports are finite.
+#include "common/base/constants.h"
 #include "common/geometry/closest_point_on_intersection.h"
 #include "common/mesh/color_segments.h"
 #include "common/geometry/common_point_of_primitives.h"
@@ -149,7 +150,7 @@ Primitive fuzz_primitive(Decoder& in)
 // A point of the given shape at surface parameters (u, v) in [0, 1]^2 (shape 0: raw fuzzed coordinates).
 Eigen::Vector3d shape_point(int shape, double u, double v, const Primitive& p)
 {
-  const double pi = 3.14159265358979323846;
+  const double pi = kPi;
   const Eigen::Vector3d a = p.axis;
   const Eigen::Vector3d e1 = any_orthogonal(a);
   const Eigen::Vector3d e2 = a.cross(e1);

@@ -5,6 +5,7 @@
 #ifndef PRIMITIVE_EDIT_DESCRIBE_PRIMITIVE_H
 #define PRIMITIVE_EDIT_DESCRIBE_PRIMITIVE_H
 
+#include "common/base/constants.h"
 #include "common/base/primitive.h"
 
 #include <cstdio>
@@ -24,7 +25,6 @@ inline std::string describe_primitive(const Primitive& p)
     std::snprintf(buf, sizeof buf, "%.6g", x);
     return std::string(buf);
   };
-  const double degrees = 57.29577951308232;
   switch (p.type) {
   case PrimitiveType::Plane:
     return "Plane: normal " + vec(p.axis) + ", offset " + num(p.axis.dot(p.origin)) + ", point " + vec(p.origin);
@@ -35,7 +35,7 @@ inline std::string describe_primitive(const Primitive& p)
            ", diameter " + num(2 * p.radius);
   case PrimitiveType::Cone:
     return "Cone: apex " + vec(p.origin) + ", axis " + vec(p.axis) + ", half-angle " +
-           num(p.half_angle * degrees) + " deg";
+           num(degrees_from_radians(p.half_angle)) + " deg";
   case PrimitiveType::Torus:
     return "Torus: centre " + vec(p.origin) + ", axis " + vec(p.axis) + ", major radius " + num(p.radius) +
            ", minor radius " + num(p.minor_radius);

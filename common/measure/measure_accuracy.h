@@ -19,9 +19,10 @@
 #ifndef PRIMITIVE_EDIT_MEASURE_ACCURACY_H
 #define PRIMITIVE_EDIT_MEASURE_ACCURACY_H
 
+#include "common/base/progress.h"
+
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_static_ptr.h>
-#include <wrap/callback.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -134,12 +135,12 @@ inline std::uint64_t spread_bits_by_3(std::uint64_t x)
   return x;
 }
 
-// Calls the vcg progress callback every 2^16 steps; false when the callback asks to stop.
-inline bool report_progress(vcg::CallBackPos* cb, Eigen::Index done, Eigen::Index total, const char* what)
+// Reports every 2^16 steps; false when the callback asks to stop.
+inline bool report_every_65536(const Progress& progress, Eigen::Index done, Eigen::Index total, const char* what)
 {
-  if (cb == nullptr || (done & 0xFFFF) != 0 || total <= 0)
+  if (!progress || (done & 0xFFFF) != 0 || total <= 0)
     return true;
-  return cb(int(100.0 * double(done) / double(total)), what);
+  return progress(int(100.0 * double(done) / double(total)), what);
 }
 
 } // namespace detail
@@ -278,7 +279,7 @@ public:
   // queries then touch the same cells and triangles, which stay in cache (random order is ~10x slower on
   // a 1M-face reference). Result in the points' order. False (out empty) when the index is not ok(), a
   // point is not finite, or the callback cancels.
-  bool distances(const Eigen::MatrixX3d& points, Eigen::VectorXd& out, vcg::CallBackPos* cb = nullptr,
+  bool distances(const Eigen::MatrixX3d& points, Eigen::VectorXd& out, const Progress& progress = {},
                  const char* what = "Measuring distances")
   {
     out.resize(0);
@@ -300,7 +301,7 @@ public:
     std::sort(order.begin(), order.end());
     out.resize(n);
     for (Eigen::Index k = 0; k < n; ++k) {
-      if (!detail::report_progress(cb, k, n, what))
+      if (!detail::report_every_65536(progress, k, n, what))
         return false;
       const Eigen::Index i = order[size_t(k)].second;
       out(i) = distance(points.row(i).transpose());
@@ -415,7 +416,7 @@ inline AccuracyReport summarize_accuracy(const Eigen::VectorXd& distances, doubl
 // Distances of the sample points to the indexed reference, summarized.
 inline AccuracyReport measure_accuracy(const Eigen::MatrixX3d& samples, SurfaceDistanceIndex& index,
                                        double tolerance, bool keep_distances = false,
-                                       vcg::CallBackPos* cb = nullptr)
+                                       const Progress& progress = {})
 {
   AccuracyReport failed;
   failed.tolerance = tolerance;
@@ -436,7 +437,7 @@ inline AccuracyReport measure_accuracy(const Eigen::MatrixX3d& samples, SurfaceD
     return failed;
   }
   Eigen::VectorXd d;
-  if (!index.distances(samples, d, cb, "Measuring distances to the reference")) {
+  if (!index.distances(samples, d, progress, "Measuring distances to the reference")) {
     failed.error = "cancelled";
     return failed;
   }
@@ -460,7 +461,7 @@ AccuracyReport measure_accuracy(const Eigen::MatrixX3d& samples, const MeshType&
 template <class MeshType>
 bool vertex_distances(const MeshType& mesh, SurfaceDistanceIndex& index, Eigen::VectorXd& distances,
                       std::string& error, const Eigen::Affine3d& to_world = Eigen::Affine3d::Identity(),
-                      vcg::CallBackPos* cb = nullptr)
+                      const Progress& progress = {})
 {
   if (!index.ok()) {
     error = index.error();
@@ -486,7 +487,7 @@ bool vertex_distances(const MeshType& mesh, SurfaceDistanceIndex& index, Eigen::
     }
   }
   Eigen::VectorXd live_distances;
-  if (!index.distances(points, live_distances, cb, "Deviation map")) {
+  if (!index.distances(points, live_distances, progress, "Deviation map")) {
     error = "cancelled";
     return false;
   }

@@ -12,6 +12,7 @@
 #ifndef PRIMITIVE_EDIT_SMOOTH_FACE_NORMALS_H
 #define PRIMITIVE_EDIT_SMOOTH_FACE_NORMALS_H
 
+#include "common/base/constants.h"
 #include "common/mesh/face_adjacency.h"
 
 #include <Eigen/Core>
@@ -48,7 +49,7 @@ std::vector<Eigen::Vector3d> smooth_face_normals(const MeshType& m, const FaceAd
     return normal;
 
   const bool gated = crease_angle_deg < 180.0;
-  const double min_cos = std::cos(crease_angle_deg * (3.14159265358979323846 / 180.0));
+  const double min_cos = std::cos(radians_from_degrees(crease_angle_deg));
   std::vector<Eigen::Vector3d> next(face_count);
   for (int pass = 0; pass < iterations; ++pass) {
     for (std::size_t f = 0; f < face_count; ++f) {

@@ -1,9 +1,9 @@
 // fit_segments_auto.h: fit_primitive_auto on every segment of a mesh, on several threads.
 //
 // Input:  the segments' samples (gather_segment_samples.h), the options of fit_primitive_auto, the number of
-//         threads (<= 0: std::thread::hardware_concurrency()), and an optional progress callback
-//         progress(done, total) that is called on the calling thread only (so a GUI callback is safe), after
-//         each segment that thread fitted; it may be called with the same count twice.
+//         threads (<= 0: std::thread::hardware_concurrency()), and an optional Progress (progress.h),
+//         called on the calling thread only (so a GUI callback is safe) after each segment that thread
+//         fitted, with the share of segments done; it may repeat a percentage. Fitting is not cancelled.
 // Output: one AutoFitResult per segment, in segment order. A segment with fewer points than a plane needs is
 //         free-form with the message "too few points". The results do not depend on the thread count: each
 //         segment is fitted by the same deterministic code, whichever thread takes it.
@@ -17,9 +17,10 @@
 #include "common/mesh/gather_segment_samples.h"
 #include "common/fit/minimum_points_for.h"
 
+#include "common/base/progress.h"
+
 #include <algorithm>
 #include <atomic>
-#include <functional>
 #include <numeric>
 #include <thread>
 #include <vector>
@@ -28,7 +29,7 @@ namespace primitive_edit {
 
 inline std::vector<AutoFitResult> fit_segments_auto(const std::vector<SegmentSamples>& segments,
                                                     const AutoFitOptions& options = {}, int threads = 0,
-                                                    const std::function<void(int, int)>& progress = {})
+                                                    const Progress& progress = {})
 {
   const int count = int(segments.size());
   std::vector<AutoFitResult> out(segments.size());
@@ -49,8 +50,8 @@ inline std::vector<AutoFitResult> fit_segments_auto(const std::vector<SegmentSam
       else
         fit = fit_primitive_auto(seg.points, seg.normals, seg.weights, options);
       const int finished = ++done;
-      if (report && progress)
-        progress(finished, count);
+      if (report)
+        report_progress(progress, 100 * finished / count, "Fitting primitives");
     }
   };
 

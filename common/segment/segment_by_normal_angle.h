@@ -18,6 +18,8 @@
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_NORMAL_ANGLE_H
 #define PRIMITIVE_EDIT_SEGMENT_BY_NORMAL_ANGLE_H
 
+#include "common/base/constants.h"
+#include "common/base/progress.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/smooth_face_normals.h"
@@ -193,22 +195,20 @@ void absorb_small_segments(const MeshType& m, const FaceAdjacency& adj, int min_
 
 template <class MeshType>
 int segment_by_normal_angle(const MeshType& m, const FaceAdjacency& adj, const SegmentByNormalAngleParams& params,
-                            std::vector<int>& segment_of_face, vcg::CallBackPos* cb = nullptr)
+                            std::vector<int>& segment_of_face, const Progress& progress = {})
 {
   const int face_count = int(m.face.size());
   segment_of_face.assign(std::size_t(face_count), -1);
   if (adj.face_count() != face_count)
     return 0; // adjacency of another mesh: nothing sensible to do
 
-  if (cb)
-    cb(0, "Smoothing face normals");
+  report_progress(progress, 0, "Smoothing face normals");
   const double crease = std::min(2.0 * params.angle_deg, 80.0);
   const std::vector<Eigen::Vector3d> normal =
       smooth_face_normals(m, adj, std::max(0, params.smoothing_iterations), crease);
 
-  if (cb)
-    cb(30, "Growing segments");
-  const double min_cos = std::cos(params.angle_deg * (3.14159265358979323846 / 180.0));
+  report_progress(progress, 30, "Growing segments");
+  const double min_cos = std::cos(radians_from_degrees(params.angle_deg));
   std::vector<int> stack;
   int segment_count = 0;
   int visited = 0;
@@ -221,8 +221,8 @@ int segment_by_normal_angle(const MeshType& m, const FaceAdjacency& adj, const S
     while (!stack.empty()) {
       const int f = stack.back();
       stack.pop_back();
-      if (cb && (++visited & 0xFFFF) == 0)
-        cb(30 + int(40.0 * visited / face_count), "Growing segments");
+      if ((++visited & 0xFFFF) == 0)
+        report_progress(progress, 30 + int(40.0 * visited / face_count), "Growing segments");
       const Eigen::Vector3d& nf = normal[std::size_t(f)];
       if (nf.isZero(0.0))
         continue;
@@ -242,24 +242,21 @@ int segment_by_normal_angle(const MeshType& m, const FaceAdjacency& adj, const S
   }
 
   if (params.min_segment_faces > 1 && segment_count > 1) {
-    if (cb)
-      cb(70, "Absorbing small segments");
+    report_progress(progress, 70, "Absorbing small segments");
     detail::absorb_small_segments(m, adj, params.min_segment_faces, segment_of_face, segment_count);
   }
   const int K = compact_segment_ids(segment_of_face);
-  if (cb)
-    cb(100, "Segmentation done");
+  report_progress(progress, 100, "Segmentation done");
   return K;
 }
 
 template <class MeshType>
 int segment_by_normal_angle(const MeshType& m, const SegmentByNormalAngleParams& params,
-                            std::vector<int>& segment_of_face, vcg::CallBackPos* cb = nullptr)
+                            std::vector<int>& segment_of_face, const Progress& progress = {})
 {
-  if (cb)
-    cb(0, "Building face adjacency");
+  report_progress(progress, 0, "Building face adjacency");
   const FaceAdjacency adj = build_face_adjacency(m);
-  return segment_by_normal_angle(m, adj, params, segment_of_face, cb);
+  return segment_by_normal_angle(m, adj, params, segment_of_face, progress);
 }
 
 } // namespace primitive_edit

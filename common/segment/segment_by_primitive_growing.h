@@ -59,6 +59,8 @@
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
+#include "common/base/constants.h"
+#include "common/base/progress.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/estimate_surface_roughness.h"
@@ -350,7 +352,7 @@ inline int find_root(std::vector<int>& parent, int s)
 template <class MeshType>
 int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
                                  const SegmentByPrimitiveGrowingParams& params, std::vector<int>& segment_of_face,
-                                 SegmentByPrimitiveGrowingReport* report = nullptr, vcg::CallBackPos* cb = nullptr)
+                                 SegmentByPrimitiveGrowingReport* report = nullptr, const Progress& progress = {})
 {
   using namespace grow_detail;
   const int face_count = int(m.face.size());
@@ -360,15 +362,14 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   if (adj.face_count() != face_count || face_count == 0)
     return 0;
 
-  if (cb)
-    cb(0, "Smoothing face normals");
+  report_progress(progress, 0, "Smoothing face normals");
   const Geometry g = face_geometry(m, adj, params.smoothing_iterations);
   const int patch_faces = std::max(8, params.seed_patch_faces);
   const int min_faces = params.min_region_faces > 0 ? params.min_region_faces : patch_faces;
   const double angle_deg = std::isfinite(params.normal_angle_deg)
                                ? std::min(std::max(params.normal_angle_deg, 1.0), 89.0)
                                : SegmentByPrimitiveGrowingParams().normal_angle_deg;
-  const double angle = angle_deg * (3.14159265358979323846 / 180.0);
+  const double angle = radians_from_degrees(angle_deg);
 
   std::vector<int> stamp(std::size_t(face_count), 0);
   int mark = 0;
@@ -383,8 +384,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   const double mean_edge = edge_count ? edge_sum / edge_count : 0.0;
   // A surface curved more tightly than a seed patch is wide is an edge rounded by the scanner (blur), not a
   // primitive: such regions are dissolved and their faces split between the neighbours.
-  const double patch_radius = std::sqrt(double(patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge /
-                                        3.14159265358979323846);
+  const double patch_radius = std::sqrt(double(patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
   // Roughness is measured on patches of a fixed share of the surface, so that the estimate does not depend
   // on the resolution and sees noise that is correlated over more than a seed patch (CT scans).
   const double roughness =
@@ -398,16 +398,15 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   std::vector<char> failed(std::size_t(face_count), 0);
   std::vector<Primitive> prim_of_region;
   std::vector<std::vector<int>> faces_of_region;
-  if (cb)
-    cb(10, "Growing regions");
+  report_progress(progress, 10, "Growing regions");
   const std::vector<int> order = tol > 0 ? seed_order(g, adj) : std::vector<int>();
   std::vector<int> patch, region, queue, band;
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
   std::size_t processed = 0;
   for (int seed : order) {
     ++processed;
-    if (cb && (processed & 0x3FFF) == 0)
-      cb(10 + int(60.0 * double(processed) / double(order.size())), "Growing regions");
+    if ((processed & 0x3FFF) == 0)
+      report_progress(progress, 10 + int(60.0 * double(processed) / double(order.size())), "Growing regions");
     if (!unassigned(seed) || failed[std::size_t(seed)])
       continue;
     bfs_patch(adj, {seed}, std::size_t(patch_faces), unassigned, stamp, ++mark, patch);
@@ -491,8 +490,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   const int grown = int(prim_of_region.size());
 
   // Merge adjacent regions whose union fits one primitive (merged_primitive), longest borders first.
-  if (cb)
-    cb(70, "Merging regions");
+  report_progress(progress, 70, "Merging regions");
   std::vector<std::tuple<int, int, int>> borders; // (-shared edges, a, b), a < b
   {
     std::vector<std::pair<int, int>> pairs;
@@ -582,8 +580,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   }
 
   // Best-first flood of the leftover faces from the regions, nearest primitive first.
-  if (cb)
-    cb(80, "Assigning the faces between regions");
+  report_progress(progress, 80, "Assigning the faces between regions");
   using Item = std::pair<double, std::pair<int, int>>; // (cost, (face, region))
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
   auto cost = [&](int f, int r) {
@@ -679,20 +676,18 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
         report->primitive_of_segment[std::size_t(label[std::size_t(f)])] = prim_of_region[std::size_t(old)];
     }
   }
-  if (cb)
-    cb(100, "Segmentation done");
+  report_progress(progress, 100, "Segmentation done");
   return K;
 }
 
 template <class MeshType>
 int segment_by_primitive_growing(const MeshType& m, const SegmentByPrimitiveGrowingParams& params,
                                  std::vector<int>& segment_of_face, SegmentByPrimitiveGrowingReport* report = nullptr,
-                                 vcg::CallBackPos* cb = nullptr)
+                                 const Progress& progress = {})
 {
-  if (cb)
-    cb(0, "Building face adjacency");
+  report_progress(progress, 0, "Building face adjacency");
   const FaceAdjacency adj = build_face_adjacency(m);
-  return segment_by_primitive_growing(m, adj, params, segment_of_face, report, cb);
+  return segment_by_primitive_growing(m, adj, params, segment_of_face, report, progress);
 }
 
 } // namespace primitive_edit

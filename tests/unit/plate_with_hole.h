@@ -4,6 +4,7 @@
 #ifndef PRIMITIVE_EDIT_TEST_PLATE_WITH_HOLE_H
 #define PRIMITIVE_EDIT_TEST_PLATE_WITH_HOLE_H
 
+#include "common/base/constants.h"
 #include "common/base/primitive.h"
 
 #include <vcg/complex/complex.h>
@@ -55,7 +56,6 @@ inline PlateWithHole make_plate_with_hole(double noise_amplitude, unsigned seed 
 {
   using primitive_edit::Primitive;
   using primitive_edit::PrimitiveType;
-  constexpr double kPi = 3.14159265358979323846;
   auto make_plane = [](const Eigen::Vector3d& origin, const Eigen::Vector3d& normal) {
     Primitive p;
     p.type = PrimitiveType::Plane;
@@ -76,7 +76,7 @@ inline PlateWithHole make_plate_with_hole(double noise_amplitude, unsigned seed 
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> noise(-noise_amplitude, noise_amplitude);
   auto jitter = [&]() { return Eigen::Vector3d(noise(rng), noise(rng), noise(rng)); };
-  auto angle = [&](double j) { return 2 * kPi * j / around; };
+  auto angle = [&](double j) { return 2 * primitive_edit::kPi * j / around; };
   // Distance from the axis to the square's boundary along angle t.
   auto square = [&](double t) { return half / std::max(std::abs(std::cos(t)), std::abs(std::sin(t))); };
   auto ray = [&](int j) { return Eigen::Vector3d(std::cos(angle(j)), std::sin(angle(j)), 0); };
@@ -126,7 +126,7 @@ inline PlateWithHole make_plate_with_hole(double noise_amplitude, unsigned seed 
     }
   };
   // Sides of the square by the angle of a wall quad's middle: 3 (+x), 4 (+y), 5 (-x), 6 (-y).
-  auto side_of = [&](int j) { return 3 + static_cast<int>(std::floor((angle(j + 0.5) + kPi / 4) / (kPi / 2))) % 4; };
+  auto side_of = [&](int j) { return 3 + static_cast<int>(std::floor((angle(j + 0.5) + primitive_edit::kPi / 4) / (primitive_edit::kPi / 2))) % 4; };
   for (int i = 0; i < rings; ++i) {
     strip(top[static_cast<size_t>(i)], top[static_cast<size_t>(i + 1)], false, [](int) { return 0; });
     strip(bottom[static_cast<size_t>(i)], bottom[static_cast<size_t>(i + 1)], true, [](int) { return 1; });

@@ -1,6 +1,7 @@
 // Tests of the Primitive Edit tool's state logic (common/pipeline/primitive_edit_session.h) without a window,
 // on the tests' mesh type and on MeshLab's CMeshO: pick, merge, split by a screen line with a given camera,
 // fit, edit, apply with sharp edges, undo several steps, and bad input.
+#include "common/base/constants.h"
 #include "common/pipeline/primitive_edit_session.h"
 
 #include "test_mesh.h"
@@ -17,7 +18,6 @@ namespace {
 
 using namespace primitive_edit;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kAround = 32, kRings = 8;
 constexpr double kRadius = 2.0, kHeight = 4.0;
 constexpr int kSideFaces = 2 * kAround * kRings;

@@ -3,6 +3,7 @@
 #ifndef PRIMITIVE_EDIT_TEST_FIT_DATA_H
 #define PRIMITIVE_EDIT_TEST_FIT_DATA_H
 
+#include "common/base/constants.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/base/primitive.h"
 
@@ -26,9 +27,9 @@ struct Sample
 // for cones, polar angle [0, cap] for spheres, the full tube for tori.
 struct Patch
 {
-  double sweep = 2 * M_PI;
+  double sweep = 2 * primitive_edit::kPi;
   double extent = 1.0;      // plane half size, cylinder height
-  double cap = M_PI;        // sphere: polar angle of the cap
+  double cap = primitive_edit::kPi;  // sphere: polar angle of the cap
   double near = 1.0, far = 2.0;  // cone: axial distances of the frustum
 };
 
@@ -69,7 +70,7 @@ inline Sample sample_primitive(const Primitive& p, const Patch& patch, int n, un
       break;
     }
     case PrimitiveType::Torus: {
-      const double t = 2 * M_PI * v;
+      const double t = 2 * primitive_edit::kPi * v;
       nrm = std::cos(t) * radial + std::sin(t) * a;
       x = p.origin + p.radius * radial + p.minor_radius * nrm;
       break;
@@ -86,7 +87,7 @@ inline void add_noise(Sample* s, double sigma, double degrees, unsigned seed)
 {
   std::mt19937 rng(seed);
   std::normal_distribution<double> N(0.0, 1.0);
-  const double tilt = degrees * M_PI / 180.0;
+  const double tilt = primitive_edit::radians_from_degrees(degrees);
   for (Eigen::Index i = 0; i < s->points.rows(); ++i) {
     s->points.row(i) += sigma * Eigen::RowVector3d(N(rng), N(rng), N(rng));
     const Eigen::Vector3d n = s->normals.row(i).transpose();

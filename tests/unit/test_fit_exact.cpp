@@ -1,5 +1,6 @@
 // Exact (noise-free) samples of every primitive type, full and partial patches, with and without
 // normals: each fit must recover the parameters to 1e-5 relative error, in the output conventions.
+#include "common/base/constants.h"
 #include "common/fit/fit_primitive.h"
 #include "test_fit_data.h"
 
@@ -55,7 +56,7 @@ TEST_P(ExactFit, PlaneRecovered)
 TEST_P(ExactFit, SphereFullAndCap)
 {
   const Primitive truth = make_sphere({0.5, 2, -1}, 3);
-  for (double cap : {M_PI, M_PI / 4}) {
+  for (double cap : {kPi, kPi / 4}) {
     Patch patch;
     patch.cap = cap;
     const Sample s = sample_primitive(truth, patch, 500, 2);
@@ -69,7 +70,7 @@ TEST_P(ExactFit, SphereFullAndCap)
 TEST_P(ExactFit, CylinderFullAnd60DegreeArc)
 {
   const Primitive truth = make_cylinder({1, 1, 1}, {1, 2, -0.5}, 2);
-  for (double sweep : {2 * M_PI, M_PI / 3}) {
+  for (double sweep : {2 * kPi, kPi / 3}) {
     Patch patch;
     patch.sweep = sweep;
     patch.extent = 3;
@@ -91,7 +92,7 @@ TEST_P(ExactFit, ConeFullAndShortFrustumSector)
   Patch frustum;  // short frustum, a third of the way around
   frustum.near = 2.0;
   frustum.far = 2.6;
-  frustum.sweep = 2 * M_PI / 3;
+  frustum.sweep = 2 * kPi / 3;
   for (const Patch& patch : {full, frustum}) {
     const Sample s = sample_primitive(truth, patch, 500, 4);
     const FitResult r = fit(truth, s, GetParam());
@@ -105,7 +106,7 @@ TEST_P(ExactFit, ConeFullAndShortFrustumSector)
 TEST_P(ExactFit, TorusFullAndQuarter)
 {
   const Primitive truth = make_torus({2, -1, 0}, {0.1, 0.3, 1}, 3, 0.8);
-  for (double sweep : {2 * M_PI, M_PI / 2}) {
+  for (double sweep : {2 * kPi, kPi / 2}) {
     Patch patch;
     patch.sweep = sweep;
     const Sample s = sample_primitive(truth, patch, 800, 5);

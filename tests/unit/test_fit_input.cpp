@@ -1,6 +1,7 @@
 // Bad input to the fits (too few points, NaN/Inf, mismatched sizes, negative weights, degenerate
 // point sets) and the output conventions (plane normal along the normals, cylinder origin nearest the
 // centroid, cone axis into the opening, weights honoured).
+#include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "test_fit_data.h"
 
@@ -137,7 +138,7 @@ TEST(FitConventions, PlaneNormalFollowsGivenNormalsAndOriginIsProjectedCentroid)
 TEST(FitConventions, CylinderOriginIsAxisPointNearestTheCentroid)
 {
   Patch patch;
-  patch.sweep = M_PI / 2;
+  patch.sweep = kPi / 2;
   patch.extent = 2;
   const Sample s = sample_primitive(make_cylinder({1, 2, 3}, {0, 1, 1}, 1.5), patch, 300, 4);
   const FitResult r = fit_cylinder(s.points, s.normals, Eigen::VectorXd());
@@ -162,7 +163,7 @@ TEST(FitConventions, ConeAxisPointsIntoTheOpeningEitherWay)
       ASSERT_TRUE(r.ok);
       EXPECT_GT(r.primitive.axis.dot(truth.axis), 1 - 1e-9);
       EXPECT_GT(r.primitive.half_angle, 0);
-      EXPECT_LT(r.primitive.half_angle, M_PI / 2);
+      EXPECT_LT(r.primitive.half_angle, kPi / 2);
       EXPECT_NEAR(r.primitive.half_angle, 0.3, 1e-7);
     }
   }

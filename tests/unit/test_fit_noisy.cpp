@@ -1,5 +1,6 @@
 // Noisy data (Gaussian, sigma = 1% of the size, fixed seeds, normals tilted ~5 degrees): radius
 // within 1%, the right type from fit_primitive_auto; 10% far outliers: radius within 1% when robust.
+#include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "test_fit_data.h"
 
@@ -23,16 +24,16 @@ std::vector<Case> cases()
   Patch plane;
   plane.extent = 2;
   Patch cap;
-  cap.cap = M_PI / 3;
+  cap.cap = kPi / 3;
   Patch arc;
-  arc.sweep = M_PI / 2;  // a 90-degree arc: where algebraic fits are biased
+  arc.sweep = kPi / 2;  // a 90-degree arc: where algebraic fits are biased
   arc.extent = 4;
   Patch frustum;
   frustum.near = 2;
   frustum.far = 4;
-  frustum.sweep = M_PI;
+  frustum.sweep = kPi;
   Patch quarter;
-  quarter.sweep = M_PI / 2;
+  quarter.sweep = kPi / 2;
   return {
       {"Plane", make_plane({0, 1, 2}, {0.1, 0.2, 1}), plane, 2},
       {"Sphere", make_sphere({1, -1, 0}, 2), cap, 2},

@@ -2,6 +2,7 @@
 // cylinder arc of a few degrees, cones of half-angle near 0 and 90 degrees, a torus whose tube nearly fills
 // its hole. Every fit must give either ok == false with a message, or a valid primitive (no NaN) whose
 // reported residuals are the true ones and small; where the data determine the primitive, its parameters.
+#include "common/base/constants.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_primitive_auto.h"
@@ -133,7 +134,7 @@ TEST(FitRobustness, CylinderArcOfAFewDegrees)
     c.axis = Eigen::Vector3d(0, 0.6, 0.8);
     c.radius = 10.0;
     test_fit::Patch patch;
-    patch.sweep = degrees * M_PI / 180.0;
+    patch.sweep = radians_from_degrees(degrees);
     patch.extent = 4.0;
     const test_fit::Sample s = test_fit::sample_primitive(c, patch, 500, 21);
     const std::string what = "cylinder arc " + std::to_string(degrees) + " deg";
@@ -159,7 +160,7 @@ TEST(FitRobustness, ConeHalfAngleNearZeroAndNinety)
     c.type = PrimitiveType::Cone;
     c.origin = Eigen::Vector3d(-1, 0.5, 2);
     c.axis = Eigen::Vector3d(1, 1, 1).normalized();
-    c.half_angle = degrees * M_PI / 180.0;
+    c.half_angle = radians_from_degrees(degrees);
     test_fit::Patch patch;
     // Keep the patch a few units across whatever the angle: near 90 degrees the cone is a flat disc.
     patch.near = degrees > 45 ? 0.02 : 2.0;

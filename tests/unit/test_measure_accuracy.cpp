@@ -1,5 +1,6 @@
 // Tests of common/mesh/sample_surface_uniform.h and common/measure/measure_accuracy.h, on the test mesh type and on
 // MeshLab's CMeshO.
+#include "common/base/constants.h"
 #include "common/measure/measure_accuracy.h"
 #include "common/mesh/sample_surface_uniform.h"
 
@@ -19,7 +20,6 @@ namespace {
 using primitive_edit::AccuracyReport;
 using primitive_edit::SurfaceDistanceIndex;
 
-constexpr double kPi = 3.14159265358979323846;
 
 template <class M>
 void add_grid_faces(M& m, int rows, int cols)
@@ -51,10 +51,10 @@ void make_sphere(M& m, double radius, int stacks, int slices)
 {
   m.Clear();
   for (int i = 0; i <= stacks; ++i) {
-    const double theta = kPi * double(i) / stacks;
+    const double theta = primitive_edit::kPi * double(i) / stacks;
     const double ring = (i == 0 || i == stacks) ? 0.0 : radius * std::sin(theta);  // exact poles
     for (int j = 0; j <= slices; ++j) {
-      const double phi = 2.0 * kPi * double(j) / slices;
+      const double phi = 2.0 * primitive_edit::kPi * double(j) / slices;
       vcg::tri::Allocator<M>::AddVertex(
           m, typename M::CoordType(ring * std::cos(phi), ring * std::sin(phi), radius * std::cos(theta)));
     }
@@ -136,7 +136,7 @@ TYPED_TEST(MeasureAccuracyTest, SphereAgainstLargerSphereMatchesRadialGap)
   ASSERT_TRUE(r.ok) << r.error;
   // The tessellated reference lies between radius 1.1 cos(step) and 1.1 (step = the larger angular step),
   // so each distance is the radial gap 1.1 - |p| up to that sagitta.
-  const double step = 2.0 * kPi / slices;
+  const double step = 2.0 * primitive_edit::kPi / slices;
   const double sagitta = 1.1 * (1.0 - std::cos(step));
   for (Eigen::Index i = 0; i < samples.rows(); ++i)
     ASSERT_NEAR(r.distances(i), 1.1 - samples.row(i).norm(), sagitta + 1e-6) << "sample " << i;

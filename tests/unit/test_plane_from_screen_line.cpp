@@ -1,5 +1,6 @@
 // Tests of common/geometry/plane_from_screen_line.h (the split tool's cutting plane) and common/geometry/primitive_wireframe.h
 // (the drawing of a fitted primitive).
+#include "common/base/constants.h"
 #include "common/geometry/plane_from_screen_line.h"
 #include "common/geometry/primitive_wireframe.h"
 
@@ -14,7 +15,6 @@ namespace {
 
 using namespace primitive_edit;
 
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Matrix4d perspective(double fovy, double aspect, double n, double f)
 {

@@ -2,6 +2,7 @@
 // rounded corner, plane) is split into its CAD faces with the rounded corner split between its two planes
 // by nearest surface; a noisy sphere is one segment; bad input does not crash. On the tests' mesh type and
 // MeshLab's CMeshO (float coordinates).
+#include "common/base/constants.h"
 #include "test_mesh.h"
 
 #include "common/mesh/face_adjacency.h"
@@ -35,7 +36,6 @@ typename M::CoordType grow_coord(double x, double y, double z)
 // 0.3 (the CAD corner is sharp: a blurred scan edge); the floor z = -8 for x in [2, 8].
 struct Profile
 {
-  static constexpr double kPi = 3.14159265358979323846;
   static constexpr double kRound = 0.3;
   double length() const { return 6.0 + kPi + (6.0 - kRound) + 0.5 * kPi * kRound + (6.0 - kRound); }
   // Point and outward normal at arc length s.
@@ -248,7 +248,6 @@ TYPED_TEST(PrimitiveGrowingTest, NoisySphereIsOneSegment)
 template <class M>
 void make_wavy_corner(M& m, double h, double amplitude, std::vector<int>& truth)
 {
-  constexpr double kPi = 3.14159265358979323846;
   const double round = 0.5, arc = 0.5 * kPi * round, length = 20.0 + arc + 8.0;
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

@@ -1,4 +1,5 @@
 // Tests of the sharp-edge math: closest_point_on_intersection and common_point_of_primitives.
+#include "common/base/constants.h"
 #include "common/geometry/closest_point_on_intersection.h"
 #include "common/geometry/common_point_of_primitives.h"
 
@@ -15,7 +16,6 @@ using namespace primitive_edit;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Primitive plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
 {

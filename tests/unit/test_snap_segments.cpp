@@ -1,5 +1,6 @@
 // Tests of snap_segments on the tests' mesh type and on MeshLab's CMeshO: parameter overrides, sharp
 // edges and corners, flip prevention, unsnapped segments and bad input.
+#include "common/base/constants.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
@@ -23,7 +24,6 @@ using namespace primitive_edit;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 using plate_fixture::build_mesh;
 using plate_fixture::Soup;
