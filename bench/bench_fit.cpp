@@ -64,7 +64,7 @@ int main()
       const Sample s = noisy(prim, patch, n);
       AutoFitResult r;
       const double ms = median_ms([&] { r = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd()); });
-      std::printf(" %9.2f%s", ms, r.ok && r.best.primitive.type == prim.type ? " " : "!");
+      std::printf(" %9.2f%s", ms, r.status.ok() && r.best.primitive.type == prim.type ? " " : "!");
     }
     std::printf("\n");
   }

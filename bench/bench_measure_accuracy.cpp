@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <vector>
 
@@ -73,7 +74,11 @@ void run(const BMesh& measured, const BMesh& reference, Eigen::Index samples_n, 
   Eigen::Vector3i grid;
   for (int run = 0; run < 3; ++run) {
     double t0 = cpu_seconds();
-    const Eigen::MatrixX3d samples = primitive_edit::sample_surface_uniform(measured, samples_n, std::uint64_t(run));
+    Eigen::MatrixX3d samples;
+    if (const primitive_edit::Status s = primitive_edit::sample_surface_uniform(measured, samples_n, std::uint64_t(run), &samples); !s) {
+      std::fprintf(stderr, "bench_measure_accuracy: %s\n", s.error.c_str());
+      std::exit(1);
+    }
     t_sample.push_back(cpu_seconds() - t0);
     t0 = cpu_seconds();
     primitive_edit::SurfaceDistanceIndex index(reference, Eigen::Affine3d::Identity(), cell_size_factor);

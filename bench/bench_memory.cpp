@@ -190,7 +190,7 @@ int main(int argc, char** argv)
         for (int s = 0; s < K; ++s) {
           const SegmentSamples& ss = samples[size_t(s)];
           const AutoFitResult fit = fit_primitive_auto(ss.points, ss.normals, ss.weights);
-          if (fit.ok) {
+          if (fit.status.ok()) {
             prims[size_t(s)] = fit.best.primitive;
             ++fitted;
           }

@@ -73,9 +73,9 @@ bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedData
   if (gla == nullptr || context == nullptr)
     return false;
   const EditOutcome attached = session_.attach(m.cm, had_face_quality_);
-  if (!attached.ok) {
+  if (!attached.status.ok()) {
     logWarning(QString::asprintf("Primitive Edit: cannot edit %s: %s.", qUtf8Printable(m.label()),
-                                 attached.message.c_str()));
+                                 attached.status.error.c_str()));
     return false;
   }
   if (!GLExtensionsManager::initializeGLextensions_notThrowing()) {
@@ -113,7 +113,7 @@ bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedData
   // The keys of the tool (M, F, Enter, ...) go to the view.
   gla->setFocus();
   logLine(QString::asprintf("Primitive Edit: editing %s (%d faces): %s.", qUtf8Printable(m.label()), m.cm.fn,
-                            attached.message.c_str()));
+                            attached.summary.c_str()));
   refresh(false);
   return true;
 }
@@ -140,6 +140,11 @@ void EditPrimitivePlugin::changeLayer(MeshDocument& md, MeshModel& old_model, GL
     return;
   end(old_model, gla, context);
   start(md, gla, context);
+}
+
+void EditPrimitivePlugin::report(const QString& what, const EditOutcome& outcome)
+{
+  report(outcome.status.ok(), what, outcome.status.ok() ? outcome.summary : outcome.status.error);
 }
 
 void EditPrimitivePlugin::report(bool ok, const QString& what, const std::string& message)
@@ -204,14 +209,14 @@ void EditPrimitivePlugin::segment()
   SegmentByNormalAngleParams params;
   params.angle_deg = panel_->angle();
   const EditOutcome outcome = session_.auto_segment(params);
-  report(outcome.ok, "automatic segmentation", outcome.message);
+  report("automatic segmentation", outcome);
   refresh(false);
 }
 
 void EditPrimitivePlugin::merge()
 {
   const EditOutcome outcome = session_.merge_picked();
-  report(outcome.ok, "merge", outcome.message);
+  report("merge", outcome);
   refresh(false);
 }
 
@@ -222,7 +227,7 @@ void EditPrimitivePlugin::split(const Eigen::Vector2d& a, const Eigen::Vector2d&
     return;
   }
   const EditOutcome outcome = session_.split_picked_by_screen_line(a, b, modelview_, projection_, viewport_);
-  report(outcome.ok, "split", outcome.message);
+  report("split", outcome);
   refresh(false);
 }
 
@@ -231,14 +236,14 @@ void EditPrimitivePlugin::fit()
   const std::optional<PrimitiveType> type = panel_->type();
   const FitResult result = session_.fit(type);
   const QString what = QString("fit %1 to %2").arg(type ? primitive_type_name(*type) : "Auto", pickedText());
-  if (result.ok)
+  if (result.status.ok())
     report(true, what,
            describe_primitive(result.primitive) + "; RMS " + QString::number(result.rms, 'g', 4).toStdString() +
                ", max residual " + QString::number(result.max_residual, 'g', 4).toStdString() + ", " +
                std::to_string(result.point_count) + " points");
   else
-    report(false, what, result.message);
-  if (result.ok && !type)
+    report(false, what, result.status.error);
+  if (result.status.ok() && !type)
     panel_->setType(result.primitive.type);
   refresh(false);
 }
@@ -248,7 +253,7 @@ void EditPrimitivePlugin::parametersEdited()
   if (!session_.edited())
     return;
   const EditOutcome outcome = session_.set_edited(panel_->editedPrimitive());
-  report(outcome.ok, "edited primitive", outcome.message);
+  report("edited primitive", outcome);
   refresh(false);
 }
 
@@ -261,18 +266,18 @@ void EditPrimitivePlugin::apply()
     session_.set_edited(panel_->editedPrimitive());
   const QString what = QString("apply to %1").arg(pickedText());
   const ApplyOutcome outcome = session_.apply(true);
-  if (outcome.ok) {
+  if (outcome.status.ok()) {
     const SnapReport& r = outcome.report;
     report(true, what,
-           "snapped onto " + outcome.message + "; " + std::to_string(r.moved_vertices) + " vertices moved (" +
+           "snapped onto " + outcome.summary + "; " + std::to_string(r.moved_vertices) + " vertices moved (" +
                std::to_string(r.edge_vertices) + " onto edges, " + std::to_string(r.corner_vertices) +
                " onto corners, " + std::to_string(r.reverted_vertices) + " held back), max displacement " +
                QString::number(r.max_displacement, 'g', 4).toStdString());
     model_->setMeshModified();
   } else {
-    report(false, what, outcome.message);
+    report(false, what, outcome.status.error);
   }
-  refresh(outcome.ok);
+  refresh(outcome.status.ok());
 }
 
 void EditPrimitivePlugin::undo()

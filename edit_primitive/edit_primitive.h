@@ -53,6 +53,7 @@ private:
   // the geometry moved) and a redraw.
   void refresh(bool geometry_moved);
   void report(bool ok, const QString& what, const std::string& message);
+  void report(const QString& what, const primitive_edit::EditOutcome& outcome);
   QString pickedText() const;
   void drawOverlay();
 

@@ -1,7 +1,7 @@
 #include "filter_measure_accuracy.h"
 
 #include "common/measure/measure_accuracy.h"
-#include "common/mesh/mesh_input_problem.h"
+#include "common/mesh/check_mesh_input.h"
 #include "common/mesh/sample_surface_uniform.h"
 
 #include <vcg/complex/algorithms/update/color.h>
@@ -102,38 +102,40 @@ Status MeasureAccuracyFilters::apply(int, FilterRun& run)
     return fail(name + QString(": Tolerance must be a positive number of mesh units (it is %1).").arg(tolerance));
   if (seed < 0)
     return fail(name + QString(": Seed must be 0 or more (it is %1).").arg(seed));
-  std::string problem = mesh_input_problem(measured->cm);
-  if (!problem.empty())
-    return fail(name + ": measured mesh '" + measured->label() + "': " + QString::fromStdString(problem) + ".");
-  problem = mesh_input_problem(reference->cm);
-  if (!problem.empty())
-    return fail(name + ": reference mesh '" + reference->label() + "': " + QString::fromStdString(problem) + ".");
+  const QString measured_name = name + ": measured mesh '" + measured->label() + "'";
+  const QString reference_name = name + ": reference mesh '" + reference->label() + "'";
+  if (const Status usable = check_mesh_input(measured->cm); !usable)
+    return fail(measured_name, usable);
+  if (const Status usable = check_mesh_input(reference->cm); !usable)
+    return fail(reference_name, usable);
 
   const Eigen::Affine3d measured_to_world = layer_to_world(measured->cm);
   const Eigen::Affine3d reference_to_world = layer_to_world(reference->cm);
 
   report_progress(progress, 0, "Sampling the measured mesh");
-  std::string error;
-  Eigen::MatrixX3d samples =
-      sample_surface_uniform(measured->cm, Eigen::Index(sample_count), std::uint64_t(seed), &error);
-  if (samples.rows() == 0)
-    return fail(name + ": measured mesh '" + measured->label() + "': " + QString::fromStdString(error) + ".");
+  Eigen::MatrixX3d samples;
+  if (const Status sampled = sample_surface_uniform(measured->cm, Eigen::Index(sample_count), std::uint64_t(seed), &samples);
+      !sampled)
+    return fail(measured_name, sampled);
   samples = (samples * measured_to_world.linear().transpose()).rowwise() + measured_to_world.translation().transpose();
 
   report_progress(progress, 5, "Indexing the reference mesh");
   SurfaceDistanceIndex index(reference->cm, reference_to_world);
-  if (!index.ok())
-    return fail(name + ": reference mesh '" + reference->label() + "': " + QString::fromStdString(index.error()) + ".");
+  if (!index.status())
+    return fail(reference_name, index.status());
 
   const AccuracyReport r =
       measure_accuracy(samples, index, tolerance, false, progress_range(progress, 10, deviation_map ? 80 : 100));
-  if (!r.ok)
-    return fail(name + ": " + QString::fromStdString(r.error) + ".");
+  if (!r.status)
+    return fail(name, r.status);
 
   Eigen::VectorXd vertex_distance;
-  if (deviation_map &&
-      !vertex_distances(measured->cm, index, vertex_distance, error, measured_to_world, progress_range(progress, 80, 100)))
-    return fail(name + ": deviation map of '" + measured->label() + "': " + QString::fromStdString(error) + ".");
+  if (deviation_map) {
+    const Status mapped =
+        vertex_distances(measured->cm, index, vertex_distance, measured_to_world, progress_range(progress, 80, 100));
+    if (!mapped)
+      return fail(name + ": deviation map of '" + measured->label() + "'", mapped);
+  }
 
   run.logf("Accuracy: %.1f%% of %d samples within %g (mean %.3f, RMS %.3f, max %.3f)", 100.0 * r.within_tolerance_share,
       int(r.sample_count), tolerance, r.mean, r.rms, r.max);

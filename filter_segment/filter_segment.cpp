@@ -3,13 +3,14 @@
 #include "common/mesh/count_segments.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/segment/merge_segments.h"
-#include "common/mesh/mesh_input_problem.h"
+#include "common/mesh/check_mesh_input.h"
 #include "common/segment/move_faces_to_new_segment.h"
 #include "common/mesh/segment_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/segment/split_segments_by_plane.h"
+#include "meshlab_api/load_segments.h"
 
 #include <QElapsedTimer>
 
@@ -24,7 +25,7 @@ namespace {
 
 // The segments of a mesh, or one segment holding every live face when it has none yet: the merge and
 // split filters then work on an unsegmented mesh as on a one-segment one.
-bool load_segments(CMeshO& m, std::vector<int>& segment_of_face)
+bool segments_or_whole_mesh(CMeshO& m, std::vector<int>& segment_of_face)
 {
   if (read_segment_ids(m, segment_of_face))
     return true;
@@ -185,10 +186,9 @@ void SegmentFilters::parameters(int id, MeshDocument& document, ParameterList& p
 Status SegmentFilters::apply(int id, FilterRun& run)
 {
   MeshModel& mm = run.mesh;
-  const std::string problem = mesh_input_problem(mm.cm);
   const QString name = segment_filter_name(id);
-  if (!problem.empty())
-    return fail(name + ": " + QString::fromStdString(problem) + ".");
+  if (const Status usable = check_mesh_input(mm.cm); !usable)
+    return fail(name, usable);
   switch (id) {
   case SEGMENT_AUTO: return autoSegment(mm, run.arguments, run);
   case SEGMENT_AUTO_PRIMITIVE: return autoSegmentByPrimitives(mm, run.arguments, run);
@@ -272,7 +272,7 @@ Status SegmentFilters::mergeSelected(MeshModel& mm, Run& run)
   if (faces.empty())
     return fail("Segment: Merge Selected: no face is selected; select faces of the segments to merge.");
   std::vector<int> segment_of_face;
-  if (!load_segments(mm.cm, segment_of_face))
+  if (!segments_or_whole_mesh(mm.cm, segment_of_face))
     run.logf("Segment: Merge Selected: the mesh has no segments yet; all faces are one segment.");
   const int before = count_segments(segment_of_face);
   const std::vector<int> segments = segments_of_faces(segment_of_face, faces);
@@ -300,7 +300,7 @@ Status SegmentFilters::splitByPlane(MeshModel& mm, const Arguments& parlst, Run&
   normal.normalize();
 
   std::vector<int> segment_of_face;
-  if (!load_segments(mm.cm, segment_of_face))
+  if (!segments_or_whole_mesh(mm.cm, segment_of_face))
     run.logf("Segment: Split by Plane: the mesh has no segments yet; all faces are one segment.");
   const int before = count_segments(segment_of_face);
   std::vector<int> segments;
@@ -329,7 +329,7 @@ Status SegmentFilters::splitBySelection(MeshModel& mm, Run& run)
   if (faces.empty())
     return fail("Segment: Split by Selection: no face is selected; select the faces of the new segment.");
   std::vector<int> segment_of_face;
-  if (!load_segments(mm.cm, segment_of_face))
+  if (!segments_or_whole_mesh(mm.cm, segment_of_face))
     run.logf("Segment: Split by Selection: the mesh had no segments yet; the other faces are one segment.");
   const int before = count_segments(segment_of_face);
   const int after = move_faces_to_new_segment(segment_of_face, faces);
@@ -342,13 +342,15 @@ Status SegmentFilters::splitBySelection(MeshModel& mm, Run& run)
 Status SegmentFilters::selectSegment(MeshModel& mm, const Arguments& parlst, Run& run)
 {
   const int segment = parlst.getInt("Segment");
-  std::vector<int> segment_of_face;
-  if (!read_segment_ids(mm.cm, segment_of_face))
-    return fail("Segment: Select Segment: the mesh has no segments; run Segment: Auto by Normal Angle first.");
+  const LoadedSegments loaded = read_segments(mm);
+  if (!loaded.found)
+    return fail("Segment: Select Segment: the mesh has no segments; run Segment: Auto by Primitive Fit first.");
+  const std::vector<int>& segment_of_face = loaded.segment_of_face;
   const int count = count_segments(segment_of_face);
   if (segment < 0 || segment >= count)
     return fail(QString("Segment: Select Segment: there is no segment %1; ids go from 0 to %2.")
                     .arg(segment).arg(count - 1));
+  keep_segment_ids(run, "Segment: Select Segment", loaded);
   CMeshO& m = mm.cm;
   int selected = 0;
   for (auto& v : m.vert)

@@ -21,13 +21,17 @@
 #include "common/mesh/gather_segment_samples.h"
 #include "common/measure/measure_accuracy.h"
 #include "common/segment/merge_segments.h"
-#include "common/mesh/mesh_input_problem.h"
+#include "common/mesh/check_mesh_input.h"
 #include "common/segment/move_faces_to_new_segment.h"
 #include "common/fit/refine_primitive.h"
 #include "common/mesh/sample_surface_uniform.h"
 #include "common/mesh/segment_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/mesh/smooth_face_normals.h"
+#include "common/pipeline/fit_all_segments.h"
+#include "common/pipeline/fit_segment.h"
+#include "common/pipeline/snap_onto_primitive.h"
+#include "common/pipeline/write_fits_json.h"
 #include "common/snap/snap_segments.h"
 #include "common/segment/split_segments_by_plane.h"
 
@@ -44,6 +48,7 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -318,10 +323,8 @@ void check_dense(const std::vector<int>& seg, int K)
 
 void check_fit(const FitResult& r)
 {
-  if (!r.ok) {
-    FUZZ_CHECK(!r.message.empty());
+  if (!r.status.ok())
     return;
-  }
   FUZZ_CHECK(primitive_is_valid(r.primitive));
   FUZZ_CHECK(std::isfinite(r.rms) && r.rms >= 0);
   FUZZ_CHECK(std::isfinite(r.max_residual) && r.max_residual >= 0);
@@ -373,8 +376,7 @@ void run(Decoder& in)
   build_mesh(in, m);
   const Params params = decode_params(in);
 
-  const std::string problem = mesh_input_problem(m);
-  (void)problem;
+  (void)check_mesh_input(m);
 
   const FaceAdjacency adj = build_face_adjacency(m);
   check_adjacency(m, adj);
@@ -462,19 +464,31 @@ void run(Decoder& in)
       const PrimitiveType type = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
       const FitResult r = fit_primitive(type, ss.points, normals, weights, params.fit);
       check_fit(r);
-      if (r.ok) {
+      if (r.status.ok()) {
         FUZZ_CHECK(r.primitive.type == type);
+        prim_of_segment[size_t(s)] = r.primitive;
+      }
+    } else if (what >= 6) {
+      // The filters' and the edit tool's fit: a given type or the automatic one, within the roughness.
+      std::optional<PrimitiveType> type;
+      if (in.bit())
+        type = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+      AutoFitOptions options = params.auto_fit;
+      options.roughness = in.special(0.05);
+      const FitResult r = fit_segment(ss, type, options);
+      check_fit(r);
+      if (r.status.ok()) {
+        FUZZ_CHECK(!type || r.primitive.type == *type);
+        FUZZ_CHECK(primitive_is_valid(r.primitive));
         prim_of_segment[size_t(s)] = r.primitive;
       }
     } else {
       const AutoFitResult r = fit_primitive_auto(ss.points, normals, weights, params.auto_fit);
       for (const FitResult& c : r.candidates)
         check_fit(c);
-      if (r.ok) {
+      if (r.status.ok()) {
         FUZZ_CHECK(primitive_is_valid(r.best.primitive));
         prim_of_segment[size_t(s)] = r.best.primitive;
-      } else {
-        FUZZ_CHECK(!r.message.empty());
       }
     }
     // Refinement from a fuzzed start (the GUI's edited parameters).
@@ -506,7 +520,47 @@ void run(Decoder& in)
       FUZZ_CHECK(corner == Eigen::Vector3d::Constant(7.0));
   }
 
-  // Snap: no vertex may become non-finite; vertices not on a snapped segment stay where they are.
+  // Fit All without snapping (the mesh stays), its counts and its JSON export.
+  if (K > 0 && K <= kMaxFittedSegments && in.bit()) {
+    FitAllSegmentsOptions options;
+    options.tolerance = in.special(0.1);
+    options.types.resize(size_t(in.u8() % (K + 1)));
+    for (auto& t : options.types)
+      if (in.bit())
+        t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+    options.fit = params.fit;
+    options.threads = 1 + in.u8() % 2;
+    const FitAllSegmentsResult r = fit_all_segments(m, seg, options);
+    if (r.status.ok()) {
+      FUZZ_CHECK(r.segment_count() == K && r.primitives.size() == size_t(K) && !r.snap);
+      int fitted = 0;
+      for (int s = 0; s < K; ++s) {
+        FUZZ_CHECK(r.fits[size_t(s)].status.ok() == r.primitives[size_t(s)].has_value());
+        fitted += r.primitives[size_t(s)] ? 1 : 0;
+      }
+      FUZZ_CHECK(fitted == r.fitted && r.fitted_area <= r.total_area && std::isfinite(r.total_area));
+      std::ostringstream json;
+      write_fits_json(json, r, "fuzz \"mesh\"\n", false);
+      const std::string text = json.str();
+      FUZZ_CHECK(std::count(text.begin(), text.end(), '{') == std::count(text.begin(), text.end(), '}'));
+    } else {
+      FUZZ_CHECK(!std::isfinite(options.tolerance) || options.tolerance < 0);
+    }
+  }
+
+  // Snap (every segment with a primitive, or one segment as the edit tool's Apply does): no vertex may become
+  // non-finite; vertices not on a snapped segment stay where they are.
+  int target = -1;
+  Primitive target_primitive;
+  if (K > 0 && in.bit()) {
+    target = int(in.u16() % K);
+    target_primitive = prim_of_segment[size_t(target)] ? *prim_of_segment[size_t(target)] : fuzz_primitive(in);
+    SegmentPrimitives effective(static_cast<size_t>(K));
+    if (params.snap.sharp_edges)
+      effective = read_segment_primitives(m, K);
+    effective[size_t(target)] = target_primitive;
+    prim_of_segment = effective;
+  }
   {
     std::vector<typename MeshType::CoordType> before(m.vert.size());
     for (size_t v = 0; v < m.vert.size(); ++v)
@@ -520,7 +574,11 @@ void run(Decoder& in)
         for (int k = 0; k < 3; ++k)
           on_snapped[vcg::tri::Index(m, m.face[f].cV(k))] = 1;
     }
-    const SnapReport report = snap_segments(m, seg, prim_of_segment, params.snap);
+    const SnapReport report = target >= 0
+                                  ? snap_onto_primitive(m, seg, {target}, target_primitive, params.snap, K)
+                                  : snap_segments(m, seg, prim_of_segment, params.snap);
+    if (target >= 0 && primitive_is_valid(target_primitive))
+      FUZZ_CHECK(read_segment_primitives(m, K)[size_t(target)].has_value());
     FUZZ_CHECK(std::isfinite(report.mean_displacement) && std::isfinite(report.max_displacement));
     for (size_t v = 0; v < m.vert.size(); ++v) {
       const auto& p = m.vert[v].cP();
@@ -537,27 +595,22 @@ void run(Decoder& in)
 
   // Accuracy: sample the mesh, measure against itself and against fuzzed points.
   {
-    std::string error;
     Eigen::VectorXi faces;
-    const Eigen::MatrixX3d pts = sample_surface_uniform(m, params.sample_count, params.seed, &error, &faces);
-    if (pts.rows() == 0) {
-      FUZZ_CHECK(!error.empty());
+    Eigen::MatrixX3d pts;
+    if (!sample_surface_uniform(m, params.sample_count, params.seed, &pts, &faces).ok()) {
+      FUZZ_CHECK(pts.rows() == 0);
     } else {
       FUZZ_CHECK(pts.rows() == params.sample_count && pts.allFinite() && faces.size() == pts.rows());
       for (Eigen::Index i = 0; i < faces.size(); ++i)
         FUZZ_CHECK(faces[i] >= 0 && size_t(faces[i]) < m.face.size() && !m.face[size_t(faces[i])].IsD());
     }
     SurfaceDistanceIndex index(m);
-    if (!index.ok()) {
-      FUZZ_CHECK(!index.error().empty());
-    } else {
+    if (index.status().ok()) {
       if (pts.rows() > 0) {
         const AccuracyReport r = measure_accuracy(pts, index, params.tolerance);
-        if (r.ok) {
+        if (r.status.ok()) {
           FUZZ_CHECK(std::isfinite(r.mean) && std::isfinite(r.rms) && std::isfinite(r.max));
           FUZZ_CHECK(r.within_tolerance_share >= 0 && r.within_tolerance_share <= 1);
-        } else {
-          FUZZ_CHECK(!r.error.empty());
         }
       }
       // A few query points near the mesh (fuzzed offsets, bounded to a few bounding boxes).
@@ -567,14 +620,12 @@ void run(Decoder& in)
         q.row(i) = Eigen::RowVector3d(in.special(2), in.special(2), in.special(2));
       if (queries > 0) {
         const AccuracyReport r = measure_accuracy(q, index, params.tolerance);
-        FUZZ_CHECK(r.ok || !r.error.empty());
+        if (r.status.ok())
+          FUZZ_CHECK(std::isfinite(r.mean) && std::isfinite(r.max));
       }
       Eigen::VectorXd distances;
-      std::string verror;
-      if (vertex_distances(m, index, distances, verror))
+      if (vertex_distances(m, index, distances).ok())
         FUZZ_CHECK(distances.allFinite() && distances.size() == Eigen::Index(m.vert.size()));
-      else
-        FUZZ_CHECK(!verror.empty());
     }
   }
 }

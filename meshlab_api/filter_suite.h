@@ -127,6 +127,11 @@ struct FilterRun
 
 // The failure of a filter, with the sentence for the log.
 inline Status fail(const QString& why) { return Status::failure(why.toStdString()); }
+// The failure of a filter because a core step failed: "context: the core's reason."
+inline Status fail(const QString& context, const Status& why)
+{
+  return Status::failure(context.toStdString() + ": " + why.error + ".");
+}
 
 class FilterSuite
 {

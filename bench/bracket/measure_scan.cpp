@@ -52,15 +52,14 @@ int main(int argc, char** argv)
     return 1;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  std::string error;
-  const Eigen::MatrixX3d points = primitive_edit::sample_surface_uniform(mesh, samples, seed, &error);
-  if (points.rows() == 0) {
-    std::fprintf(stderr, "measure_scan: %s: %s\n", mesh_path.c_str(), error.c_str());
+  Eigen::MatrixX3d points;
+  if (const primitive_edit::Status s = primitive_edit::sample_surface_uniform(mesh, samples, seed, &points); !s) {
+    std::fprintf(stderr, "measure_scan: %s: %s\n", mesh_path.c_str(), s.error.c_str());
     return 1;
   }
   const primitive_edit::AccuracyReport r = primitive_edit::measure_accuracy(points, reference, tolerance);
-  if (!r.ok) {
-    std::fprintf(stderr, "measure_scan: %s\n", r.error.c_str());
+  if (!r.status) {
+    std::fprintf(stderr, "measure_scan: %s\n", r.status.error.c_str());
     return 1;
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -2,7 +2,7 @@
 //
 // Input:  points N x 3, normals (N x 3 or empty), weights (N or empty = all 1), the minimum number
 //         of points the fit needs.
-// Output: true when the input is usable; otherwise false and *message says why. Non-finite
+// Output: success when the input is usable; otherwise a failure saying why. Non-finite
 //         coordinates, normals or weights are rejected (not dropped): a mesh with NaN vertices is
 //         broken and silently ignoring part of it would hide that. Negative weights, mismatched
 //         sizes and fewer than min_points points of positive weight are rejected too.
@@ -10,21 +10,19 @@
 #ifndef PRIMITIVE_EDIT_CHECK_FIT_INPUT_H
 #define PRIMITIVE_EDIT_CHECK_FIT_INPUT_H
 
+#include "common/base/status.h"
+
 #include <Eigen/Core>
 
 #include <string>
 
 namespace primitive_edit {
 
-inline bool check_fit_input(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
-                            const Eigen::VectorXd& weights, int min_points, std::string* message)
+inline Status check_fit_input(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
+                              const Eigen::VectorXd& weights, int min_points)
 {
   const Eigen::Index n = points.rows();
-  auto fail = [&](const std::string& m) {
-    if (message)
-      *message = m;
-    return false;
-  };
+  const auto fail = Status::failure;
   if (normals.rows() != 0 && normals.rows() != n)
     return fail("normals must have as many rows as points (or none)");
   if (weights.size() != 0 && weights.size() != n)
@@ -44,7 +42,7 @@ inline bool check_fit_input(const Eigen::MatrixX3d& points, const Eigen::MatrixX
   if (used < min_points)
     return fail("too few points: " + std::to_string(used) + " with positive weight, need at least " +
                 std::to_string(min_points));
-  return true;
+  return Status::success();
 }
 
 } // namespace primitive_edit

@@ -3,7 +3,7 @@
 // Input:  points N x 3 (N >= 7), normals N x 3 or empty, weights N or empty (= all 1), options.
 // Output: FitResult with a Cone: origin = apex, unit axis from the apex into the opening (towards
 //         the points), half angle in (0, pi/2). Data of a cylinder give a cone with a tiny half angle
-//         and a far apex (fit_primitive_auto then prefers the cylinder). ok == false for bad input or
+//         and a far apex (fit_primitive_auto then prefers the cylinder). A failed status for bad input or
 //         when no start exists.
 // Method: candidate axis lines, each turned into a cone by regressing the distance to the line on
 //         the height along it (rho = rho0 + h tan(alpha): the cone's generator), refined
@@ -99,7 +99,8 @@ inline FitResult fit_cone(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d
                           const Eigen::VectorXd& weights, const FitOptions& options = {})
 {
   FitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Cone), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Cone));
+  if (!out.status)
     return out;
   const FitSample s = fit_subsample(points, normals, weights, 2000);
   const Eigen::MatrixX3d start_normals = fit_start_normals(s);

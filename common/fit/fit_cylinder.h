@@ -2,7 +2,7 @@
 //
 // Input:  points N x 3 (N >= 6), normals N x 3 or empty, weights N or empty (= all 1), options.
 // Output: FitResult with a Cylinder: origin = the axis point closest to the (inlier) centroid, unit
-//         axis (sign: largest component positive), radius. ok == false for bad input or when no
+//         axis (sign: largest component positive), radius. A failed status for bad input or when no
 //         start exists (e.g. collinear points).
 // Method: candidate axis directions, each placed by a circle fit of the points projected along it
 //         (fit_circle_around_axis.h), refined geometrically (refine_best_start.h), best kept:
@@ -34,7 +34,8 @@ inline FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::Matri
                               const Eigen::VectorXd& weights, const FitOptions& options = {})
 {
   FitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Cylinder), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Cylinder));
+  if (!out.status)
     return out;
   const FitSample s = fit_subsample(points, normals, weights, 2000);
   std::vector<Eigen::Vector3d> directions;
@@ -57,7 +58,7 @@ inline FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::Matri
     starts.push_back(p);
   }
   out = refine_best_start(starts, points, weights, s, options);
-  if (out.ok) {
+  if (out.status.ok()) {
     Eigen::Index k = 0;
     out.primitive.axis.cwiseAbs().maxCoeff(&k);
     if (out.primitive.axis[k] < 0)

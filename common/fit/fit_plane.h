@@ -3,7 +3,7 @@
 // Input:  points N x 3 (N >= 3), normals N x 3 or empty, weights N or empty (= all 1), options.
 // Output: FitResult with a Plane: origin = weighted centroid (of the inliers) projected onto the plane,
 //         axis = unit normal, oriented along the sum of the given normals when there are normals,
-//         otherwise with its largest component positive. ok == false for bad input or collinear points.
+//         otherwise with its largest component positive. A failed status for bad input or collinear points.
 // Method: the weighted PCA plane (smallest principal axis) is the exact orthogonal least-squares
 //         plane; refine_best_start.h then only adds the robust reweighting (on a 2000-point
 //         subsample first for large inputs, then on all points).
@@ -23,11 +23,12 @@ inline FitResult fit_plane(const Eigen::MatrixX3d& points, const Eigen::MatrixX3
                            const Eigen::VectorXd& weights, const FitOptions& options = {})
 {
   FitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Plane), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Plane));
+  if (!out.status)
     return out;
   const WeightedPca pca = weighted_pca(points, weights);
   if (!pca.ok || !(pca.eigenvalues[1] > 1e-12 * pca.eigenvalues[2])) {
-    out.message = "points are collinear or coincident: no unique plane";
+    out.status = Status::failure("points are collinear or coincident: no unique plane");
     return out;
   }
   Primitive start;

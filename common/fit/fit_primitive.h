@@ -27,7 +27,7 @@ inline FitResult fit_primitive(PrimitiveType type, const Eigen::MatrixX3d& point
   case PrimitiveType::Torus: return fit_torus(points, normals, weights, options);
   }
   FitResult out;
-  out.message = "unknown primitive type";
+  out.status = Status::failure("unknown primitive type");
   return out;
 }
 

@@ -5,7 +5,7 @@
 //         points of positive weight and 3 x options.roughness, the data's noise RMS if known) and the
 //         per-fit options.
 // Output: AutoFitResult: candidates = the fit of each type, in PrimitiveType order; best = the chosen
-//         one; ok == false when the input is bad or nothing fits within the tolerance (free-form; best
+//         one; a failed status when the input is bad or nothing fits within the tolerance (free-form; best
 //         is then the best-scoring fit, for information).
 // Choice: score = max(rms, 1e-6 * diagonal) * (1 + 0.5 * degrees of freedom): a richer type has to
 //         lower the RMS by 11-17% per extra parameter (a torus 44% below a plane), so nested types
@@ -49,8 +49,7 @@ struct AutoFitOptions
 
 struct AutoFitResult
 {
-  bool ok = false;  // false: free-form (nothing fits within tolerance) or bad input
-  std::string message;
+  Status status;                     // failure: free-form (nothing fits within tolerance) or bad input
   FitResult best;                    // best fit (also filled when free-form, for information)
   std::vector<FitResult> candidates; // all tried, in PrimitiveType order
 };
@@ -79,7 +78,8 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
                                         const Eigen::VectorXd& weights, const AutoFitOptions& options = {})
 {
   AutoFitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Plane), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Plane));
+  if (!out.status)
     return out;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (Eigen::Index i = 0; i < points.rows(); ++i)
@@ -89,7 +89,7 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     }
   const double diagonal = (hi - lo).norm();
   if (!(diagonal > 0)) {
-    out.message = "all points coincide";
+    out.status = Status::failure("all points coincide");
     return out;
   }
   // A rough scan's segments deviate from their primitive by its roughness whatever their size.
@@ -107,7 +107,7 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     const PrimitiveType type = static_cast<PrimitiveType>(t);
     out.candidates.push_back(fit_primitive(type, s.points, s.normals, s.weights, screen_options));
     const FitResult& c = out.candidates.back();
-    if (!c.ok)
+    if (!c.status.ok())
       continue;
     const double score = std::max(c.rms, 1e-6 * diagonal) * (1.0 + 0.5 * primitive_degrees_of_freedom(type));
     const Primitive& p = c.primitive;
@@ -130,8 +130,8 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     }
   }
   if (chosen < 0) {
-    out.message = fallback < 0 ? "no primitive type could be fitted"
-                               : "free-form: no primitive fits within the tolerance " + std::to_string(tolerance);
+    out.status = Status::failure(fallback < 0 ? "no primitive type could be fitted"
+                                 : "free-form: no primitive fits within the tolerance " + std::to_string(tolerance));
     if (fallback >= 0)
       out.best = out.candidates[static_cast<size_t>(fallback)];
     return out;
@@ -139,13 +139,12 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
   // The screen may have stopped early or seen a subsample: the winner gets the full refinement.
   FitResult& winner = out.candidates[static_cast<size_t>(chosen)];
   FitResult full = refine_primitive(winner.primitive, points, weights, options.fit, 2);
-  if (full.ok)
+  if (full.status.ok())
     winner = full;
   out.best = winner;
-  out.ok = winner.rms <= tolerance;
-  if (!out.ok)
-    out.message = "free-form: the chosen " + std::string(primitive_type_name(winner.primitive.type)) +
-                  " exceeds the tolerance on all points";
+  if (!(winner.rms <= tolerance))
+    out.status = Status::failure("free-form: the chosen " + std::string(primitive_type_name(winner.primitive.type)) +
+                                 " exceeds the tolerance on all points");
   return out;
 }
 

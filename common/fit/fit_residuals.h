@@ -21,7 +21,7 @@ inline FitResult fit_residuals(const Primitive& prim, const Eigen::MatrixX3d& po
   FitResult out;
   out.primitive = prim;
   if (!primitive_is_valid(prim)) {
-    out.message = "invalid primitive";
+    out.status = Status::failure("invalid primitive");
     return out;
   }
   double sum_wd2 = 0, sum_w = 0, max_d = 0;
@@ -37,10 +37,9 @@ inline FitResult fit_residuals(const Primitive& prim, const Eigen::MatrixX3d& po
     ++count;
   }
   if (count == 0 || !(sum_w > 0)) {
-    out.message = "no point with positive weight";
+    out.status = Status::failure("no point with positive weight");
     return out;
   }
-  out.ok = true;
   out.rms = std::sqrt(sum_wd2 / sum_w);
   out.max_residual = max_d;
   out.point_count = count;

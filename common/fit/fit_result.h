@@ -2,21 +2,19 @@
 //
 // A fit reports the primitive (see primitive.h for the parameter conventions), the RMS and maximum
 // orthogonal distance of the points it kept (weight > 0 after the robust step, input weights used in
-// the RMS) and how many they are. ok == false means no primitive could be fitted; message says why.
+// the RMS) and how many they are. A failed status means no primitive could be fitted; its error says why.
 // Cost: none (plain data).
 #ifndef PRIMITIVE_EDIT_FIT_RESULT_H
 #define PRIMITIVE_EDIT_FIT_RESULT_H
 
 #include "common/base/primitive.h"
-
-#include <string>
+#include "common/base/status.h"
 
 namespace primitive_edit {
 
 struct FitResult
 {
-  bool ok = false;       // false: could not fit (message says why); primitive then unspecified
-  std::string message;   // why it failed, or empty
+  Status status;         // failure: why no primitive could be fitted; primitive then unspecified
   Primitive primitive;
   double rms = 0, max_residual = 0;  // orthogonal distances of inlier points (weights > 0 after robust step)
   int point_count = 0;   // points used

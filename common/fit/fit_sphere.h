@@ -1,7 +1,7 @@
 // fit_sphere.h: sphere through points.
 //
 // Input:  points N x 3 (N >= 4), normals N x 3 or empty, weights N or empty (= all 1), options.
-// Output: FitResult with a Sphere (origin = centre, radius). ok == false for bad input and for
+// Output: FitResult with a Sphere (origin = centre, radius). A failed status for bad input and for
 //         (nearly) coplanar or collinear points: no start exists, or the sphere's radius exceeds
 //         1e4 times the data's extent (a plane, not a sphere).
 // Method: two starts, each refined geometrically (refine_best_start.h):
@@ -101,7 +101,8 @@ inline FitResult fit_sphere(const Eigen::MatrixX3d& points, const Eigen::MatrixX
                             const Eigen::VectorXd& weights, const FitOptions& options = {})
 {
   FitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Sphere), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Sphere));
+  if (!out.status)
     return out;
   const FitSample s = fit_subsample(points, normals, weights, 2000);
   std::vector<Primitive> starts;
@@ -111,15 +112,14 @@ inline FitResult fit_sphere(const Eigen::MatrixX3d& points, const Eigen::MatrixX
   if (s.normals.rows() && fit_sphere_detail::normal_lines_sphere(s.points, s.normals, s.weights, &p))
     starts.push_back(p);
   if (starts.empty()) {
-    out.message = "points are coplanar or collinear: no sphere";
+    out.status = Status::failure("points are coplanar or collinear: no sphere");
     return out;
   }
   out = refine_best_start(starts, points, weights, s, options);
   const double extent = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
-  if (out.ok && out.primitive.radius > 1e4 * extent) {
-    out.ok = false;
-    out.message = "points are (nearly) coplanar: sphere radius " + std::to_string(out.primitive.radius) +
-                  " exceeds 1e4 times the data extent";
+  if (out.status.ok() && out.primitive.radius > 1e4 * extent) {
+    out.status = Status::failure("points are (nearly) coplanar: sphere radius " + std::to_string(out.primitive.radius) +
+                                 " exceeds 1e4 times the data extent");
   }
   return out;
 }

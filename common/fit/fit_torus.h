@@ -3,7 +3,7 @@
 // Input:  points N x 3 (N >= 8), normals N x 3 or empty, weights N or empty (= all 1), options.
 // Output: FitResult with a Torus: origin = centre (on the axis, in the plane of the tube-centre circle),
 //         unit axis (sign: largest component positive), radius = major radius R, minor_radius = tube
-//         radius r. ok == false for bad input or when no start exists.
+//         radius r. A failed status for bad input or when no start exists.
 // Method: a torus is not a quadric, so it is started from the data: candidate axis lines, then the
 //         meridian section (distance rho to the axis, height h along it) is fitted with a circle
 //         (fit_circle_2d.h), whose centre is (R, height of the centre) and radius r; each start is
@@ -93,7 +93,8 @@ inline FitResult fit_torus(const Eigen::MatrixX3d& points, const Eigen::MatrixX3
                            const Eigen::VectorXd& weights, const FitOptions& options = {})
 {
   FitResult out;
-  if (!check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Torus), &out.message))
+  out.status = check_fit_input(points, normals, weights, minimum_points_for(PrimitiveType::Torus));
+  if (!out.status)
     return out;
   const FitSample s = fit_subsample(points, normals, weights, 2000);
   const Eigen::MatrixX3d start_normals = fit_start_normals(s);
@@ -115,7 +116,7 @@ inline FitResult fit_torus(const Eigen::MatrixX3d& points, const Eigen::MatrixX3
       starts.push_back(p);
   }
   out = refine_best_start(starts, points, weights, s, options);
-  if (out.ok) {
+  if (out.status.ok()) {
     Eigen::Index k = 0;
     out.primitive.axis.cwiseAbs().maxCoeff(&k);
     if (out.primitive.axis[k] < 0)

@@ -7,7 +7,7 @@
 //         scored by the median |distance| over all of them (robust: not fooled by a start that fits a
 //         small part and rejects the rest) or, with options.robust off, by the RMS; the winner is
 //         refined fully (with the robust rounds) on the sample, then on all points when the sample is
-//         smaller. ok == false with a message when no start could be refined.
+//         smaller. A failed status when no start could be refined.
 // Cost:   O(S * 500 * 10) for S starts, plus O((n + N) * iterations) for the winner.
 #ifndef PRIMITIVE_EDIT_REFINE_BEST_START_H
 #define PRIMITIVE_EDIT_REFINE_BEST_START_H
@@ -38,7 +38,7 @@ inline FitResult refine_best_start(const std::vector<Primitive>& starts, const E
     if (!primitive_is_valid(start))
       continue;
     const FitResult r = refine_primitive(start, screen.points, screen.weights, screen_options);
-    if (!r.ok)
+    if (!r.status.ok())
       continue;
     double score = r.rms;
     if (options.robust) {
@@ -56,13 +56,13 @@ inline FitResult refine_best_start(const std::vector<Primitive>& starts, const E
     }
   }
   FitResult best;
-  best.message = "no usable start (degenerate data)";
+  best.status = Status::failure("no usable start (degenerate data)");
   if (!have_winner)
     return best;
   best = refine_primitive(winner, sample.points, sample.weights, options);
-  if (best.ok && sample.points.rows() < points.rows()) {
+  if (best.status.ok() && sample.points.rows() < points.rows()) {
     FitResult full = refine_primitive(best.primitive, points, weights, options, 2);
-    if (full.ok)
+    if (full.status.ok())
       return full;
   }
   return best;

@@ -8,7 +8,7 @@
 //         reweighted with Tukey's biweight (c = 4.685 * 1.4826 * median |d|, first rounds wider) so
 //         that outliers (e.g. points of a neighbouring surface at the segment border) get weight 0.
 //         rms / max_residual / point_count are over the points of final weight > 0, in the output
-//         conventions of canonicalize_primitive.h. ok == false if the start is invalid or the
+//         conventions of canonicalize_primitive.h. A failed status if the start is invalid or the
 //         refinement could not keep a valid primitive.
 // Method: the parameters are local to the current primitive and re-based after every accepted step:
 //         axis a -> normalize(a + t1 e1 + t2 e2) with e1, e2 orthogonal to a, so no parametrisation
@@ -294,7 +294,7 @@ inline FitResult refine_primitive(const Primitive& start, const Eigen::MatrixX3d
   FitResult failed;
   failed.primitive = start;
   if (!primitive_is_valid(start)) {
-    failed.message = "invalid start primitive";
+    failed.status = Status::failure("invalid start primitive");
     return failed;
   }
   const Eigen::VectorXd w = weights.size() ? weights : Eigen::VectorXd::Ones(points.rows());
@@ -333,10 +333,7 @@ inline FitResult refine_primitive(const Primitive& start, const Eigen::MatrixX3d
       used[i] = used[i] > 0 ? w[i] : 0.0;
   }
   p = canonicalize_primitive(p, points, used);
-  FitResult out = fit_residuals(p, points, used);
-  if (!out.ok && out.message.empty())
-    out.message = "refinement failed";
-  return out;
+  return fit_residuals(p, points, used);
 }
 
 } // namespace primitive_edit

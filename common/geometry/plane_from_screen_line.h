@@ -6,7 +6,7 @@
 //         glGetDoublev gives them once mapped to Eigen's column-major storage) and the viewport
 //         (x, y, width, height). Perspective and orthographic projections both work.
 // Output: ScreenLinePlane: a point of the plane and its unit normal; every point that projects onto the line
-//         (at any depth) lies on the plane. ok == false with a message when the end points coincide (closer
+//         (at any depth) lies on the plane. A failed status when the end points coincide (closer
 //         than 1e-6 pixels), any input is not finite, the viewport is empty or projection * modelview is
 //         singular.
 // Method: each end point is un-projected at the near and far clipping depths; the four points are coplanar
@@ -23,12 +23,13 @@
 #include <cmath>
 #include <string>
 
+#include "common/base/status.h"
+
 namespace primitive_edit {
 
 struct ScreenLinePlane
 {
-  bool ok = false;
-  std::string message;
+  Status status;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
@@ -40,21 +41,21 @@ inline ScreenLinePlane plane_from_screen_line(const Eigen::Vector2d& a, const Ei
   ScreenLinePlane out;
   if (!a.allFinite() || !b.allFinite() || !modelview.allFinite() || !projection.allFinite() ||
       !viewport.allFinite()) {
-    out.message = "the screen line or the camera is not finite";
+    out.status = Status::failure("the screen line or the camera is not finite");
     return out;
   }
   if (!(viewport[2] > 0 && viewport[3] > 0)) {
-    out.message = "the viewport is empty";
+    out.status = Status::failure("the viewport is empty");
     return out;
   }
   if ((b - a).norm() < 1e-6) {
-    out.message = "the line is too short: its end points coincide";
+    out.status = Status::failure("the line is too short: its end points coincide");
     return out;
   }
   const Eigen::Matrix4d clip_from_object = projection * modelview;
   Eigen::FullPivLU<Eigen::Matrix4d> lu(clip_from_object);
   if (!lu.isInvertible()) {
-    out.message = "the camera matrices are singular";
+    out.status = Status::failure("the camera matrices are singular");
     return out;
   }
   const Eigen::Matrix4d object_from_clip = lu.inverse();
@@ -79,16 +80,15 @@ inline ScreenLinePlane plane_from_screen_line(const Eigen::Vector2d& a, const Ei
   const double length = normal.norm();
   // Relative test: parallel directions (a line along the view) leave a cross product of rounding size.
   if (!finite || !std::isfinite(length) || !(length > 1e-12 * along_line.norm() * along_view.norm())) {
-    out.message = "the line does not define a plane with this camera";
+    out.status = Status::failure("the line does not define a plane with this camera");
     return out;
   }
   out.point = 0.25 * (a_near + a_far + b_near + b_far);
   out.normal = normal / length;
   if (!out.point.allFinite() || !out.normal.allFinite()) {
-    out.message = "the line does not define a plane with this camera";
+    out.status = Status::failure("the line does not define a plane with this camera");
     return out;
   }
-  out.ok = true;
   return out;
 }
 

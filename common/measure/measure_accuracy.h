@@ -15,11 +15,12 @@
 // vertex_distances(mesh, index): the distance of every vertex of a mesh to the reference (for a
 //   deviation map), indexed by vcg::tri::Index. O(V) queries.
 // Failures (empty input, NaN/infinite coordinates, tolerance <= 0, reference without usable faces,
-// cancelled by the progress callback) give ok == false and an error sentence; never NaN.
+// cancelled by the progress callback) give a failed Status saying why; never NaN.
 #ifndef PRIMITIVE_EDIT_MEASURE_ACCURACY_H
 #define PRIMITIVE_EDIT_MEASURE_ACCURACY_H
 
 #include "common/base/progress.h"
+#include "common/base/status.h"
 
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_static_ptr.h>
@@ -155,7 +156,7 @@ public:
                                 double cell_size_factor = kDefaultCellSizeFactor)
   {
     if (!(cell_size_factor > 0.0) || !std::isfinite(cell_size_factor)) {
-      error_ = "the grid cell size factor must be positive";
+      status_ = Status::failure("the grid cell size factor must be positive");
       return;
     }
     triangles_.reserve(size_t(std::max(reference.fn, 0)));
@@ -180,32 +181,32 @@ public:
       box_.Add(triangle_box);
     }
     if (triangles_.empty()) {
-      error_ = reference.fn == 0 ? "the reference mesh has no faces"
-                                 : "the reference mesh has no face with finite coordinates and a positive area";
+      status_ = Status::failure(reference.fn == 0
+                                ? "the reference mesh has no faces"
+                                : "the reference mesh has no face with finite coordinates and a positive area");
       return;
     }
     if (!std::isfinite(area) || !std::isfinite(box_.Diag())) {
-      error_ = "the reference mesh is too large for double precision";
+      status_ = Status::failure("the reference mesh is too large for double precision");
       return;
     }
     build_grid(area, cell_size_factor);
     marker_.reset(triangles_.data(), triangles_.size());
-    ok_ = true;
   }
 
   SurfaceDistanceIndex(const SurfaceDistanceIndex&) = delete;  // the grid points into triangles_
   SurfaceDistanceIndex& operator=(const SurfaceDistanceIndex&) = delete;
 
-  bool ok() const { return ok_; }
-  const std::string& error() const { return error_; }
+  // Failed when the reference has nothing to measure against; every query then fails too.
+  const Status& status() const { return status_; }
   Eigen::Index triangle_count() const { return Eigen::Index(triangles_.size()); }
   Eigen::Index skipped_face_count() const { return skipped_faces_; }
   Eigen::Vector3i grid_size() const { return Eigen::Vector3i(grid_.siz[0], grid_.siz[1], grid_.siz[2]); }
 
-  // Unsigned distance from a finite point p to the reference surface; infinity when not ok().
+  // Unsigned distance from a finite point p to the reference surface; infinity when the index failed.
   double distance(const Eigen::Vector3d& p)
   {
-    if (!ok_)
+    if (!status_)
       return std::numeric_limits<double>::infinity();
     // Start from the previous query's closest triangle: queries come in spatial order, so it is
     // usually near, and its distance prunes most cells at once.
@@ -277,14 +278,16 @@ public:
 
   // Distances of many finite points, queried in Morton (Z-curve) order of their position: neighbouring
   // queries then touch the same cells and triangles, which stay in cache (random order is ~10x slower on
-  // a 1M-face reference). Result in the points' order. False (out empty) when the index is not ok(), a
-  // point is not finite, or the callback cancels.
-  bool distances(const Eigen::MatrixX3d& points, Eigen::VectorXd& out, const Progress& progress = {},
+  // a 1M-face reference). Result in the points' order. Fails (out empty) when the index failed, a point
+  // is not finite, or the callback cancels.
+  Status distances(const Eigen::MatrixX3d& points, Eigen::VectorXd& out, const Progress& progress = {},
                  const char* what = "Measuring distances")
   {
     out.resize(0);
-    if (!ok_ || !points.allFinite())
-      return false;
+    if (!status_)
+      return status_;
+    if (!points.allFinite())
+      return Status::failure("some points have NaN or infinite coordinates");
     const Eigen::Index n = points.rows();
     std::vector<std::pair<std::uint64_t, Eigen::Index>> order(static_cast<size_t>(n));
     const Eigen::Vector3d lo = n > 0 ? Eigen::Vector3d(points.colwise().minCoeff().transpose()) : Eigen::Vector3d::Zero();
@@ -301,12 +304,14 @@ public:
     std::sort(order.begin(), order.end());
     out.resize(n);
     for (Eigen::Index k = 0; k < n; ++k) {
-      if (!detail::report_every_65536(progress, k, n, what))
-        return false;
+      if (!detail::report_every_65536(progress, k, n, what)) {
+        out.resize(0);
+        return Status::failure("cancelled");
+      }
       const Eigen::Index i = order[size_t(k)].second;
       out(i) = distance(points.row(i).transpose());
     }
-    return true;
+    return Status::success();
   }
 
 private:
@@ -325,7 +330,8 @@ private:
     return std::sqrt(sq);
   }
 
-  // Cubic cells of edge factor * sqrt(area / triangles), coarsened when that would exceed the cell cap.
+  // Cubic cells of edge factor * sqrt(area / triangles), coarsened when that would exceed the cell cap (and
+  // along an axis where the coordinates' precision demands it).
   void build_grid(double area, double cell_size_factor)
   {
     const double n = double(triangles_.size());
@@ -339,10 +345,14 @@ private:
     Eigen::Vector3i size;
     vcg::Box3d grid_box;
     for (int axis = 0; axis < 3; ++axis) {
-      size[axis] = int(cells_along(axis, cell));
+      // Far from the origin a cell must stay wider than the coordinates' precision, or the grid's box
+      // collapses to zero width along that axis (found by the fuzz target: a flat mesh at z = 1e32).
+      const double far = std::max(std::abs(box_.min[axis]), std::abs(box_.max[axis]));
+      const double c = std::max(cell, 64 * std::numeric_limits<double>::epsilon() * far);
+      size[axis] = int(cells_along(axis, c));
       const double centre = 0.5 * (box_.min[axis] + box_.max[axis]);
-      grid_box.min[axis] = centre - 0.5 * size[axis] * cell;
-      grid_box.max[axis] = centre + 0.5 * size[axis] * cell;
+      grid_box.min[axis] = centre - 0.5 * size[axis] * c;
+      grid_box.max[axis] = centre + 0.5 * size[axis] * c;
     }
     grid_.Set(triangles_.begin(), triangles_.end(), grid_box, vcg::Point3i(size[0], size[1], size[2]));
   }
@@ -353,14 +363,12 @@ private:
   size_t last_ = 0;  // the previous query's closest triangle
   vcg::Box3d box_;  // of the indexed triangles
   Eigen::Index skipped_faces_ = 0;
-  bool ok_ = false;
-  std::string error_;
+  Status status_;
 };
 
 struct AccuracyReport
 {
-  bool ok = false;
-  std::string error;
+  Status status;
   Eigen::Index sample_count = 0;
   double tolerance = 0.0;
   double within_tolerance_share = 0.0;  // 0..1: samples with distance <= tolerance
@@ -379,15 +387,15 @@ inline AccuracyReport summarize_accuracy(const Eigen::VectorXd& distances, doubl
   AccuracyReport r;
   r.tolerance = tolerance;
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-    r.error = "the tolerance must be a positive finite number";
+    r.status = Status::failure("the tolerance must be a positive finite number");
     return r;
   }
   if (distances.size() == 0) {
-    r.error = "there are no distances to summarize";
+    r.status = Status::failure("there are no distances to summarize");
     return r;
   }
   if (!distances.allFinite() || (distances.array() < 0.0).any()) {
-    r.error = "the distances must be finite and non-negative";
+    r.status = Status::failure("the distances must be finite and non-negative");
     return r;
   }
   r.sample_count = distances.size();
@@ -409,7 +417,6 @@ inline AccuracyReport summarize_accuracy(const Eigen::VectorXd& distances, doubl
   r.mean = sum / n;
   r.rms = std::sqrt(sum_sq / n);
   r.max = max;
-  r.ok = true;
   return r;
 }
 
@@ -420,27 +427,26 @@ inline AccuracyReport measure_accuracy(const Eigen::MatrixX3d& samples, SurfaceD
 {
   AccuracyReport failed;
   failed.tolerance = tolerance;
-  if (!index.ok()) {
-    failed.error = index.error();
+  if (!index.status()) {
+    failed.status = index.status();
     return failed;
   }
   if (samples.rows() == 0) {
-    failed.error = "there are no sample points";
+    failed.status = Status::failure("there are no sample points");
     return failed;
   }
   if (!samples.allFinite()) {
-    failed.error = "some sample points have NaN or infinite coordinates";
+    failed.status = Status::failure("some sample points have NaN or infinite coordinates");
     return failed;
   }
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-    failed.error = "the tolerance must be a positive finite number";
+    failed.status = Status::failure("the tolerance must be a positive finite number");
     return failed;
   }
   Eigen::VectorXd d;
-  if (!index.distances(samples, d, progress, "Measuring distances to the reference")) {
-    failed.error = "cancelled";
+  failed.status = index.distances(samples, d, progress, "Measuring distances to the reference");
+  if (!failed.status)
     return failed;
-  }
   AccuracyReport r = summarize_accuracy(d, tolerance);
   if (keep_distances)
     r.distances = std::move(d);
@@ -457,20 +463,16 @@ AccuracyReport measure_accuracy(const Eigen::MatrixX3d& samples, const MeshType&
 }
 
 // Distance of each vertex of `mesh` (mapped by `to_world`) to the indexed reference, indexed by
-// vcg::tri::Index; deleted vertices get 0. False, with `error`, on a non-finite live vertex.
+// vcg::tri::Index; deleted vertices get 0. Fails on a non-finite live vertex or when cancelled.
 template <class MeshType>
-bool vertex_distances(const MeshType& mesh, SurfaceDistanceIndex& index, Eigen::VectorXd& distances,
-                      std::string& error, const Eigen::Affine3d& to_world = Eigen::Affine3d::Identity(),
-                      const Progress& progress = {})
+Status vertex_distances(const MeshType& mesh, SurfaceDistanceIndex& index, Eigen::VectorXd& distances,
+                        const Eigen::Affine3d& to_world = Eigen::Affine3d::Identity(),
+                        const Progress& progress = {})
 {
-  if (!index.ok()) {
-    error = index.error();
-    return false;
-  }
-  if (mesh.vn == 0) {
-    error = "the mesh has no vertices";
-    return false;
-  }
+  if (!index.status())
+    return index.status();
+  if (mesh.vn == 0)
+    return Status::failure("the mesh has no vertices");
   // Live vertices' positions, queried together (in spatial order); deleted ones keep 0.
   std::vector<Eigen::Index> live;
   live.reserve(mesh.vert.size());
@@ -481,21 +483,16 @@ bool vertex_distances(const MeshType& mesh, SurfaceDistanceIndex& index, Eigen::
   for (size_t k = 0; k < live.size(); ++k) {
     const auto& p = mesh.vert[size_t(live[k])].cP();
     points.row(Eigen::Index(k)) = (to_world * Eigen::Vector3d(double(p[0]), double(p[1]), double(p[2]))).transpose();
-    if (!points.row(Eigen::Index(k)).allFinite()) {
-      error = "vertex " + std::to_string(live[k]) + " has NaN or infinite coordinates";
-      return false;
-    }
+    if (!points.row(Eigen::Index(k)).allFinite())
+      return Status::failure("vertex " + std::to_string(live[k]) + " has NaN or infinite coordinates");
   }
   Eigen::VectorXd live_distances;
-  if (!index.distances(points, live_distances, progress, "Deviation map")) {
-    error = "cancelled";
-    return false;
-  }
+  if (Status measured = index.distances(points, live_distances, progress, "Deviation map"); !measured)
+    return measured;
   distances = Eigen::VectorXd::Zero(Eigen::Index(mesh.vert.size()));
   for (size_t k = 0; k < live.size(); ++k)
     distances(live[k]) = live_distances(Eigen::Index(k));
-  error.clear();
-  return true;
+  return Status::success();
 }
 
 } // namespace primitive_edit

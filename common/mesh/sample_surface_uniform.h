@@ -2,14 +2,16 @@
 //
 // Input:  any vcg triangle mesh, the number of samples N >= 1 and a seed. Deleted faces, faces with a
 //         NaN/infinite vertex coordinate and zero-area faces are skipped (they carry no area).
-// Output: an N x 3 matrix of points (double). Each sample picks a face with probability proportional to
+// Output: *samples, an N x 3 matrix of points (double). Each sample picks a face with probability proportional to
 //         its area, then a uniform point inside it. The same mesh, N and seed give the same points on every
 //         platform (std::mt19937_64 and our own bits-to-double mapping, no std:: distributions).
 //         Optionally the face index (vcg::tri::Index) of each sample. On failure (N < 1, no face with
-//         area) the matrix is empty and `error` says why.
+//         area) a failure saying why, and *samples empty.
 // Cost:   O(F + N log F) time, O(F) memory besides the output.
 #ifndef PRIMITIVE_EDIT_SAMPLE_SURFACE_UNIFORM_H
 #define PRIMITIVE_EDIT_SAMPLE_SURFACE_UNIFORM_H
+
+#include "common/base/status.h"
 
 #include <vcg/complex/complex.h>
 
@@ -35,15 +37,14 @@ inline double unit_uniform(std::mt19937_64& rng)
 } // namespace detail
 
 template <class MeshType>
-Eigen::MatrixX3d sample_surface_uniform(const MeshType& mesh, Eigen::Index count, std::uint64_t seed,
-                                        std::string* error = nullptr, Eigen::VectorXi* sample_faces = nullptr)
+Status sample_surface_uniform(const MeshType& mesh, Eigen::Index count, std::uint64_t seed,
+                              Eigen::MatrixX3d* samples, Eigen::VectorXi* sample_faces = nullptr)
 {
-  auto fail = [&](const std::string& why) {
-    if (error != nullptr)
-      *error = why;
+  auto fail = [&](std::string why) {
+    samples->resize(0, 3);
     if (sample_faces != nullptr)
       sample_faces->resize(0);
-    return Eigen::MatrixX3d(0, 3);
+    return Status::failure(std::move(why));
   };
   if (count < 1)
     return fail("the number of samples must be at least 1");
@@ -77,7 +78,7 @@ Eigen::MatrixX3d sample_surface_uniform(const MeshType& mesh, Eigen::Index count
     return fail("the total surface area overflows");
 
   std::mt19937_64 rng(seed);
-  Eigen::MatrixX3d samples(count, 3);
+  samples->resize(count, 3);
   if (sample_faces != nullptr)
     sample_faces->resize(count);
   for (Eigen::Index s = 0; s < count; ++s) {
@@ -93,13 +94,11 @@ Eigen::MatrixX3d sample_surface_uniform(const MeshType& mesh, Eigen::Index count
       b = 1.0 - b;
     }
     const Eigen::Matrix3d& c = corners[j];
-    samples.row(s) = (c.col(0) + a * (c.col(1) - c.col(0)) + b * (c.col(2) - c.col(0))).transpose();
+    samples->row(s) = (c.col(0) + a * (c.col(1) - c.col(0)) + b * (c.col(2) - c.col(0))).transpose();
     if (sample_faces != nullptr)
       (*sample_faces)(s) = face_index[j];
   }
-  if (error != nullptr)
-    error->clear();
-  return samples;
+  return Status::success();
 }
 
 } // namespace primitive_edit

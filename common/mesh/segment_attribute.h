@@ -8,8 +8,9 @@
 //                    dense ids 0..K-1). Taken from the attribute when present and valid (every live face
 //                    has an id >= 0), else from the face quality when the mesh has it and every live face's
 //                    quality is a non-negative integer (a PLY saved with face quality and reopened; note that a
-//                    quality left all zero reads as one segment). Returns false, with segment_of_face all -1,
-//                    when neither holds.
+//                    quality left all zero reads as one segment). Stored ids that are dense are kept as they
+//                    are; others are compacted keeping their order (compact_segment_ids.h), and *renumbered
+//                    (if given) says so. Returns false, with segment_of_face all -1, when neither holds.
 // write_segment_ids: input a mesh and segment_of_face (dense ids; entries missing or negative mean no
 //                    segment); writes the attribute (replacing a non-int one of the same name), the face
 //                    quality if HasPerFaceQuality(m), and colours from color_segments if HasPerFaceColor(m).
@@ -55,13 +56,23 @@ bool has_int_face_attribute(const MeshType& m, const std::string& name)
   return false;
 }
 
+// Compacts ids read from the mesh; true when that changed any of them.
+inline bool compact_stored_ids(std::vector<int>& segment_of_face)
+{
+  const std::vector<int> stored = segment_of_face;
+  compact_segment_ids(segment_of_face);
+  return stored != segment_of_face;
+}
+
 } // namespace detail
 
 template <class MeshType>
-bool read_segment_ids(const MeshType& m, std::vector<int>& segment_of_face)
+bool read_segment_ids(const MeshType& m, std::vector<int>& segment_of_face, bool* renumbered = nullptr)
 {
   const std::size_t face_count = m.face.size();
   segment_of_face.assign(face_count, -1);
+  if (renumbered)
+    *renumbered = false;
   const std::string name(kSegmentAttributeName);
   if (detail::has_int_face_attribute(m, name)) {
     // vcg's FindPerFaceAttribute takes a non-const mesh only because it may re-lay-out an attribute loaded
@@ -76,7 +87,9 @@ bool read_segment_ids(const MeshType& m, std::vector<int>& segment_of_face)
         valid = segment_of_face[f] >= 0;
       }
       if (valid) {
-        compact_segment_ids(segment_of_face);
+        const bool changed = detail::compact_stored_ids(segment_of_face);
+        if (renumbered)
+          *renumbered = changed;
         return true;
       }
       segment_of_face.assign(face_count, -1);
@@ -96,7 +109,9 @@ bool read_segment_ids(const MeshType& m, std::vector<int>& segment_of_face)
     }
     segment_of_face[f] = int(q);
   }
-  compact_segment_ids(segment_of_face);
+  const bool changed = detail::compact_stored_ids(segment_of_face);
+  if (renumbered)
+    *renumbered = changed;
   return true;
 }
 

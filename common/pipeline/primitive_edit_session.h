@@ -3,9 +3,9 @@
 // A session is attached to one mesh. It keeps the segmentation (mirrored on the mesh by write_segment_ids
 // after every change), the picked segments, the last fit and the primitive the user edited from it, and an
 // undo stack. Every step calls common/: segment_by_normal_angle, merge_segments, split_segments_by_plane
-// (with plane_from_screen_line), fit_primitive / fit_primitive_auto on gather_segment_samples, and
-// snap_segments with the primitives recorded in the SegmentPrimitives attribute, exactly as the batch filter
-// "Primitive: Snap Segment" does. Each undoable step (auto segmentation, merge, split, apply) stores a
+// (with plane_from_screen_line), and, exactly as the filters "Primitive: Fit Segment" and "Primitive: Snap
+// Segment" do, fit_segment on gather_segment_samples (the automatic type within the scan's roughness) and
+// snap_onto_primitive. Each undoable step (auto segmentation, merge, split, apply) stores a
 // snapshot: the segment ids, the recorded primitives, the picked segments and the old positions of the
 // vertices it moved; undo() restores the latest one, up to kMaxUndo steps back.
 // Merge and split keep the recorded primitive of every segment they leave whole (under its new id).
@@ -13,24 +13,22 @@
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 
-#include "common/mesh/count_segments.h"
 #include "common/base/describe_primitive.h"
-#include "common/mesh/face_adjacency.h"
-#include "common/fit/fit_primitive.h"
-#include "common/fit/fit_primitive_auto.h"
-#include "common/mesh/gather_segment_samples.h"
-#include "common/segment/merge_segments.h"
-#include "common/mesh/mesh_input_problem.h"
-#include "common/fit/minimum_points_for.h"
 #include "common/geometry/plane_from_screen_line.h"
+#include "common/mesh/check_mesh_input.h"
+#include "common/mesh/count_segments.h"
+#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_attribute.h"
-#include "common/segment/segment_by_normal_angle.h"
 #include "common/mesh/segment_primitive_attribute.h"
-#include "common/snap/snap_segments.h"
+#include "common/mesh/update_normals_and_bounds.h"
+#include "common/pipeline/fit_segment.h"
+#include "common/pipeline/snap_onto_primitive.h"
+#include "common/segment/merge_segments.h"
+#include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/split_segments_by_plane.h"
 
-#include <vcg/complex/algorithms/update/bounding.h>
-#include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/complex.h>
 
 #include <Eigen/Core>
@@ -46,17 +44,20 @@
 
 namespace primitive_edit {
 
-// What a step did: ok, or why not, in words for the log.
+// What a step did, in words for the log: a summary when it succeeded, the status's error when not.
 struct EditOutcome
 {
-  bool ok = false;
-  std::string message;
+  Status status;
+  std::string summary;
+
+  static EditOutcome done(std::string summary) { return {Status::success(), std::move(summary)}; }
+  static EditOutcome refused(std::string why) { return {Status::failure(std::move(why)), {}}; }
 };
 
 struct ApplyOutcome
 {
-  bool ok = false;
-  std::string message;
+  Status status;
+  std::string summary;
   SnapReport report;
 };
 
@@ -67,22 +68,26 @@ public:
   using CoordType = typename MeshType::CoordType;
   static constexpr std::size_t kMaxUndo = 32;
 
-  // Starts editing m. Returns false (message says why) when m cannot be edited: empty, a point cloud, or
+  // Starts editing m. Refuses (the status says why) when m cannot be edited: empty, a point cloud, or
   // NaN coordinates. The segments are read from the mesh (read_segment_ids); with use_quality false only
   // from the SegmentId attribute, not from a face quality that holds something else. The mesh must outlive
   // the session or be detached first.
   EditOutcome attach(MeshType& m, bool use_quality = true)
   {
     detach();
-    const std::string problem = mesh_input_problem(m);
-    if (!problem.empty())
-      return {false, problem};
+    if (Status usable = check_mesh_input(m); !usable)
+      return {std::move(usable), {}};
     mesh_ = &m;
-    if (!read_segment_ids(m, labels_) ||
+    bool renumbered = false;
+    if (!read_segment_ids(m, labels_, &renumbered) ||
         (!use_quality && !detail::has_int_face_attribute(m, std::string(kSegmentAttributeName))))
       labels_.assign(m.face.size(), -1);
+    else if (renumbered)  // as the filters do: the ids the user reads in the face quality are the session's
+      write_segment_ids(m, labels_);
     adjacency_ = build_face_adjacency(m);
-    return {true, has_segments() ? std::to_string(segment_count()) + " segments" : "no segments yet"};
+    return EditOutcome::done(has_segments() ? std::to_string(segment_count()) + " segments" +
+                                                  (renumbered ? " (stored ids renumbered 0 to K-1, in their order)" : "")
+                                            : "no segments yet");
   }
 
   void detach()
@@ -92,6 +97,7 @@ public:
     adjacency_ = FaceAdjacency();
     picked_.clear();
     undo_.clear();
+    roughness_.reset();
     clear_fit();
   }
 
@@ -115,11 +121,11 @@ public:
 
   EditOutcome auto_segment(const SegmentByNormalAngleParams& params)
   {
-    if (const EditOutcome bad = check_mesh(); !bad.ok)
+    if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
     if (!(params.angle_deg > 0 && params.angle_deg < 180))
-      return {false, "the angle must be between 0 and 180 degrees"};
-    push_snapshot("segmentation", {});
+      return EditOutcome::refused("the angle must be between 0 and 180 degrees");
+    push_snapshot(take_snapshot("segmentation"));
     std::vector<int> labels;
     const int k = segment_by_normal_angle(*mesh_, adjacency_, params, labels);
     store(labels, SegmentPrimitives());
@@ -127,7 +133,7 @@ public:
     clear_fit();
     char angle[32];
     std::snprintf(angle, sizeof angle, "%.3g", params.angle_deg);
-    return {true, std::to_string(k) + " segments at " + angle + " degrees"};
+    return EditOutcome::done(std::to_string(k) + " segments at " + angle + " degrees");
   }
 
   // Picks the segment of a face: alone, or (additive) added to / removed from the picked ones. A face with no
@@ -159,11 +165,11 @@ public:
   // Merges the picked segments into one, which stays picked.
   EditOutcome merge_picked()
   {
-    if (const EditOutcome bad = check_mesh(); !bad.ok)
+    if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
     if (picked_.size() < 2)
-      return {false, "pick at least two segments to merge (Shift+click adds a segment)"};
-    push_snapshot("merge", {});
+      return EditOutcome::refused("pick at least two segments to merge (Shift+click adds a segment)");
+    push_snapshot(take_snapshot("merge"));
     std::vector<int> labels = labels_;
     const int before = segment_count();
     const int face = first_face_of(picked_.front());
@@ -171,31 +177,32 @@ public:
     store(labels, carry_primitives(labels));
     picked_.assign(1, segment_of(face));
     clear_fit();
-    return {true, std::to_string(before - after + 1) + " segments merged into segment " +
-                      std::to_string(picked_.front()) + "; " + std::to_string(after) + " segments"};
+    return EditOutcome::done(std::to_string(before - after + 1) + " segments merged into segment " +
+                             std::to_string(picked_.front()) + "; " + std::to_string(after) + " segments");
   }
 
   // Cuts the picked segments by a plane; every connected piece on each side becomes a segment.
   EditOutcome split_picked_by_plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
   {
-    if (const EditOutcome bad = check_mesh(); !bad.ok)
+    if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
     if (picked_.empty())
-      return {false, "pick the segment to split first"};
+      return EditOutcome::refused("pick the segment to split first");
     if (!point.allFinite() || !normal.allFinite() || !(normal.norm() > 0))
-      return {false, "the cutting plane is not valid"};
+      return EditOutcome::refused("the cutting plane is not valid");
     std::vector<int> labels = labels_;
     const int before = segment_count();
     const int after = split_segments_by_plane(*mesh_, adjacency_, labels, picked_, point, normal);
     if (after == before)
-      return {false, "the line does not cut the picked segment (draw it across the segment)"};
-    push_snapshot("split", {});
+      return EditOutcome::refused("the line does not cut the picked segment (draw it across the segment)");
+    push_snapshot(take_snapshot("split"));
     store(labels, carry_primitives(labels));
     const std::size_t cut = picked_.size();
     picked_.clear();
     clear_fit();
-    return {true, std::to_string(cut) + " segment(s) cut into " + std::to_string(after - before + int(cut)) +
-                      " pieces; " + std::to_string(after) + " segments"};
+    return EditOutcome::done(std::to_string(cut) + " segment(s) cut into " +
+                             std::to_string(after - before + int(cut)) + " pieces; " + std::to_string(after) +
+                             " segments");
   }
 
   // The same, with the plane through a line drawn on screen and the view direction (see plane_from_screen_line).
@@ -204,8 +211,8 @@ public:
                                           const Eigen::Vector4d& viewport)
   {
     const ScreenLinePlane plane = plane_from_screen_line(a, b, modelview, projection, viewport);
-    if (!plane.ok)
-      return {false, plane.message};
+    if (!plane.status)
+      return EditOutcome::refused(plane.status.error);
     return split_picked_by_plane(plane.point, plane.normal);
   }
 
@@ -215,40 +222,23 @@ public:
   {
     clear_fit();
     FitResult out;
-    if (const EditOutcome bad = check_mesh(); !bad.ok) {
-      out.message = bad.message;
+    if (const EditOutcome bad = check_mesh(); !bad.status) {
+      out.status = bad.status;
       return out;
     }
     if (picked_.empty()) {
-      out.message = "pick a segment to fit first";
+      out.status = Status::failure("pick a segment to fit first");
       return out;
     }
     const SegmentSamples samples = picked_samples();
-    if (type) {
-      if (samples.points.rows() < minimum_points_for(*type)) {
-        out.message = std::string("the picked segments have ") + std::to_string(samples.points.rows()) +
-                      " points; a " + primitive_type_name(*type) + " needs at least " +
-                      std::to_string(minimum_points_for(*type));
-        return out;
-      }
-      out = fit_primitive(*type, samples.points, samples.normals, samples.weights);
-    } else {
-      if (samples.points.rows() < minimum_points_for(PrimitiveType::Plane)) {
-        out.message = "the picked segments have too few points to fit";
-        return out;
-      }
-      const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights);
-      out = automatic.best;
-      if (!automatic.ok) {
-        out.ok = false;
-        out.message = "no primitive fits: " + automatic.message;
-      }
-    }
-    if (out.ok && !primitive_is_valid(out.primitive)) {
-      out.ok = false;
-      out.message = "the fit gave an invalid primitive";
-    }
-    if (out.ok) {
+    AutoFitOptions options;
+    if (!type)  // as the filters: a segment of a rough scan is a primitive within the scan's roughness
+      options.roughness = roughness();
+    out = fit_segment(samples, type, options);
+    if (!out.status)
+      out.status = Status::failure("the picked segments " +
+                                   std::string(type ? "cannot be fitted: " : "fit no primitive: ") + out.status.error);
+    if (out.status) {
       fit_ = out;
       edited_ = out.primitive;
       fit_points_ = samples.points;
@@ -264,15 +254,16 @@ public:
   EditOutcome set_edited(Primitive p)
   {
     if (!edited_)
-      return {false, "fit a primitive first"};
+      return EditOutcome::refused("fit a primitive first");
     if (p.type != edited_->type)
-      return {false, "the type differs from the fitted one; fit again with the new type"};
+      return EditOutcome::refused("the type differs from the fitted one; fit again with the new type");
     if (p.axis.allFinite() && p.axis.norm() > 0)
       p.axis.normalize();
     if (!primitive_is_valid(p))
-      return {false, "not a valid " + std::string(primitive_type_name(p.type)) + ": " + describe_primitive(p)};
+      return EditOutcome::refused("not a valid " + std::string(primitive_type_name(p.type)) + ": " +
+                                  describe_primitive(p));
     edited_ = p;
-    return {true, describe_primitive(p)};
+    return EditOutcome::done(describe_primitive(p));
   }
 
   // Moves the picked segments onto the edited primitive, with sharp edges against the segments snapped
@@ -280,41 +271,26 @@ public:
   ApplyOutcome apply(bool sharp_edges = true)
   {
     ApplyOutcome out;
-    if (const EditOutcome bad = check_mesh(); !bad.ok) {
-      out.message = bad.message;
+    if (const EditOutcome bad = check_mesh(); !bad.status) {
+      out.status = bad.status;
       return out;
     }
     if (!edited_ || picked_.empty()) {
-      out.message = "pick a segment and fit a primitive first";
+      out.status = Status::failure("pick a segment and fit a primitive first");
       return out;
     }
-    const int count = segment_count();
-    const SegmentPrimitives recorded = read_segment_primitives(*mesh_, count);
-    SegmentPrimitives primitives(static_cast<std::size_t>(count));
-    if (sharp_edges)
-      std::copy(recorded.begin(), recorded.end(), primitives.begin());
-    for (int s : picked_)
-      primitives[std::size_t(s)] = *edited_;
-
+    Snapshot snapshot = take_snapshot("apply");
     std::vector<CoordType> before(mesh_->vert.size());
     for (std::size_t v = 0; v < before.size(); ++v)
       before[v] = mesh_->vert[v].cP();
     SnapOptions options;
     options.sharp_edges = sharp_edges;
-    out.report = snap_segments(*mesh_, labels_, primitives, options);
-    std::vector<std::pair<int, CoordType>> moved;
+    out.report = snap_onto_primitive(*mesh_, labels_, picked_, *edited_, options, segment_count());
     for (std::size_t v = 0; v < before.size(); ++v)
       if (mesh_->vert[v].cP() != before[v])
-        moved.emplace_back(int(v), before[v]);
-    push_snapshot("apply", std::move(moved));
-
-    SegmentPrimitives updated = recorded;
-    for (int s : picked_)
-      updated[std::size_t(s)] = *edited_;
-    write_segment_primitives(*mesh_, updated);
-    update_geometry();
-    out.ok = true;
-    out.message = describe_primitive(*edited_);
+        snapshot.positions.emplace_back(int(v), before[v]);
+    push_snapshot(std::move(snapshot));
+    out.summary = describe_primitive(*edited_);
     return out;
   }
 
@@ -328,7 +304,7 @@ public:
   // Undoes the latest step: segment ids, recorded primitives, picks and moved vertices come back.
   bool undo()
   {
-    if (undo_.empty() || check_mesh().ok == false) {
+    if (undo_.empty() || !check_mesh().status) {
       undo_.clear();
       return false;
     }
@@ -343,7 +319,7 @@ public:
     store(s.labels, s.primitives);
     picked_ = s.picked;
     if (!s.positions.empty())
-      update_geometry();
+      update_normals_and_bounds(*mesh_);
     return true;
   }
 
@@ -361,10 +337,10 @@ private:
   EditOutcome check_mesh() const
   {
     if (mesh_ == nullptr)
-      return {false, "no mesh is being edited"};
+      return EditOutcome::refused("no mesh is being edited");
     if (labels_.size() != mesh_->face.size() || adjacency_.face_count() != int(mesh_->face.size()))
-      return {false, "the mesh has changed since the tool started; restart the tool"};
-    return {true, ""};
+      return EditOutcome::refused("the mesh has changed since the tool started; restart the tool");
+    return EditOutcome::done({});
   }
 
   void clear_fit()
@@ -391,10 +367,15 @@ private:
     return std::move(gather_segment_samples(*mesh_, labels, 1).front());
   }
 
-  void push_snapshot(const char* what, std::vector<std::pair<int, CoordType>> positions)
+  // The state before a step: segment ids, recorded primitives and picks (the step adds moved vertices).
+  Snapshot take_snapshot(const char* what) const
   {
-    undo_.push_back(
-        {what, labels_, read_segment_primitives(*mesh_, segment_count()), picked_, std::move(positions)});
+    return {what, labels_, read_segment_primitives(*mesh_, segment_count()), picked_, {}};
+  }
+
+  void push_snapshot(Snapshot s)
+  {
+    undo_.push_back(std::move(s));
     if (undo_.size() > kMaxUndo)
       undo_.pop_front();
   }
@@ -442,12 +423,13 @@ private:
       clear_segment_primitives(*mesh_);
   }
 
-  void update_geometry()
+  // The scan's roughness, estimated once per session (the vertices a fit sees do not move before an apply,
+  // and an apply moves them onto primitives, which only lowers it).
+  double roughness()
   {
-    // PerVertexNormalizedPerFace recomputes face normals unnormalised, so normalise them afterwards.
-    vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(*mesh_);
-    vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(*mesh_);
-    vcg::tri::UpdateBounding<MeshType>::Box(*mesh_);
+    if (!roughness_)
+      roughness_ = estimate_surface_roughness(*mesh_, adjacency_);
+    return *roughness_;
   }
 
   MeshType* mesh_ = nullptr;
@@ -458,6 +440,7 @@ private:
   std::optional<Primitive> edited_;
   Eigen::MatrixX3d fit_points_ = Eigen::MatrixX3d(0, 3);
   std::deque<Snapshot> undo_;
+  std::optional<double> roughness_;
 };
 
 } // namespace primitive_edit

@@ -221,7 +221,7 @@ inline std::optional<Primitive> fit_faces(const Geometry& g, const std::vector<i
   if (points.rows() < 3)
     return std::nullopt;
   auto accept = [&](const FitResult& r) {
-    return r.ok && primitive_is_valid(r.primitive) && agreeing_share(g, r.primitive, faces, tol, angle) >= share;
+    return r.status.ok() && primitive_is_valid(r.primitive) && agreeing_share(g, r.primitive, faces, tol, angle) >= share;
   };
   if (start) {
     FitOptions fast;
@@ -237,7 +237,7 @@ inline std::optional<Primitive> fit_faces(const Geometry& g, const std::vector<i
   AutoFitOptions options;
   options.tolerance = 0.5 * tol;
   const AutoFitResult best = fit_primitive_auto(points, normals, weights, options);
-  if (best.ok && accept(best.best))
+  if (best.status.ok() && accept(best.best))
     return best.best.primitive;
   return std::nullopt;
 }
@@ -316,11 +316,11 @@ inline std::optional<Primitive> merged_primitive(const Geometry& g, const std::v
     // Refined on a wavy union, a sphere or cylinder may flatten out to a huge radius: within the tolerance
     // it is a plane, and is reported as one (as fit_primitive_auto would choose).
     const bool curved = r.primitive.type == PrimitiveType::Sphere || r.primitive.type == PrimitiveType::Cylinder;
-    if (r.ok && curved &&
+    if (r.status.ok() && curved &&
         r.primitive.radius - std::sqrt(std::max(0.0, r.primitive.radius * r.primitive.radius - 0.25 * diagonal * diagonal)) <=
             tol)
       r = fit_plane(points, normals, weights);
-    if (!r.ok || !primitive_is_valid(r.primitive) || curvature_radius(r.primitive) < min_radius)
+    if (!r.status.ok() || !primitive_is_valid(r.primitive) || curvature_radius(r.primitive) < min_radius)
       return;
     const double share = std::min(sampled_share(g, r.primitive, fa, tol, angle),
                                   sampled_share(g, r.primitive, fb, tol, angle));

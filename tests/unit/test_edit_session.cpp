@@ -6,7 +6,7 @@
 
 #include "test_mesh.h"
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_test_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -94,10 +94,10 @@ protected:
   void SetUp() override
   {
     make_closed_cylinder(mesh);
-    ASSERT_TRUE(session.attach(mesh).ok);
+    ASSERT_TRUE(session.attach(mesh).status.ok());
     SegmentByNormalAngleParams params;
     params.angle_deg = 30;
-    ASSERT_TRUE(session.auto_segment(params).ok);
+    ASSERT_TRUE(session.auto_segment(params).status.ok());
   }
   // vcg's ~TriMesh leaves per-face and per-mesh attributes allocated: free them for LeakSanitizer.
   void TearDown() override
@@ -113,7 +113,7 @@ protected:
   PrimitiveEditSession<M> session;
 };
 
-using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+using MeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh>;
 TYPED_TEST_SUITE(EditSessionTest, MeshTypes);
 
 TYPED_TEST(EditSessionTest, AutoSegmentationFindsSideAndCaps)
@@ -161,7 +161,7 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
   ASSERT_TRUE(s.pick(0, false));
   const EditOutcome split = s.split_picked_by_screen_line({50, 430}, {750, 430}, camera.modelview,
                                                           camera.projection, camera.viewport);
-  ASSERT_TRUE(split.ok) << split.message;
+  ASSERT_TRUE(split.status.ok()) << split.status.error;
   EXPECT_EQ(s.segment_count(), 4);
   EXPECT_TRUE(s.picked().empty());
   // Every side face lands on the side of the line its centroid projects to; the caps stay whole.
@@ -180,7 +180,7 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
   ASSERT_TRUE(s.pick(kFirstTopFace, false));
   const std::size_t depth = s.undo_depth();
   EXPECT_FALSE(s.split_picked_by_screen_line({0, 5}, {10, 5}, camera.modelview, camera.projection,
-                                             camera.viewport).ok);
+                                             camera.viewport).status.ok());
   EXPECT_EQ(s.undo_depth(), depth);
 
   // Merge the two halves back (the second picked with Shift).
@@ -190,7 +190,7 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
   ASSERT_TRUE(s.pick(face_above, false));
   ASSERT_TRUE(s.pick(face_below, true));
   const EditOutcome merged = s.merge_picked();
-  ASSERT_TRUE(merged.ok) << merged.message;
+  ASSERT_TRUE(merged.status.ok()) << merged.status.error;
   EXPECT_EQ(s.segment_count(), 3);
   EXPECT_EQ(s.picked(), std::vector<int>{s.segment_of(0)});
   for (int f = 0; f < kSideFaces; ++f)
@@ -198,12 +198,12 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
 
   // Fit a cylinder, change its radius, apply.
   const FitResult fit = s.fit(PrimitiveType::Cylinder);
-  ASSERT_TRUE(fit.ok) << fit.message;
+  ASSERT_TRUE(fit.status.ok()) << fit.status.error;
   EXPECT_NEAR(fit.primitive.radius, kRadius, 1e-3);
   EXPECT_NEAR(std::abs(fit.primitive.axis.z()), 1.0, 1e-4);
   Primitive edited = *s.edited();
   edited.radius = 2.5;
-  ASSERT_TRUE(s.set_edited(edited).ok);
+  ASSERT_TRUE(s.set_edited(edited).status.ok());
   auto radius_of_side = [&](double& lo, double& hi) {
     lo = 1e9;
     hi = 0;
@@ -216,7 +216,7 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
       }
   };
   ApplyOutcome applied = s.apply();
-  ASSERT_TRUE(applied.ok) << applied.message;
+  ASSERT_TRUE(applied.status.ok()) << applied.status.error;
   EXPECT_GT(applied.report.moved_vertices, 0);
   double lo, hi;
   radius_of_side(lo, hi);
@@ -236,7 +236,7 @@ TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
   ASSERT_TRUE(s.edited().has_value());
   EXPECT_DOUBLE_EQ(s.edited()->radius, 2.5);
   applied = s.apply();
-  ASSERT_TRUE(applied.ok) << applied.message;
+  ASSERT_TRUE(applied.status.ok()) << applied.status.error;
   radius_of_side(lo, hi);
   EXPECT_NEAR(lo, 2.5, 1e-4);
   ASSERT_TRUE(s.undo());
@@ -258,22 +258,22 @@ TYPED_TEST(EditSessionTest, ApplyMakesSharpEdgesAgainstSnappedNeighbours)
   auto& s = this->session;
   auto& m = this->mesh;
   ASSERT_TRUE(s.pick(0, false));
-  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).ok);
+  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).status.ok());
   Primitive cylinder = *s.edited();
   cylinder.radius = 2.5;
-  ASSERT_TRUE(s.set_edited(cylinder).ok);
-  ASSERT_TRUE(s.apply().ok);
+  ASSERT_TRUE(s.set_edited(cylinder).status.ok());
+  ASSERT_TRUE(s.apply().status.ok());
 
   // The top cap, raised to z = 4.2: its rim must land on the circle where plane and cylinder meet.
   ASSERT_TRUE(s.pick(kFirstTopFace, false));
   const FitResult plane_fit = s.fit(std::nullopt);
-  ASSERT_TRUE(plane_fit.ok) << plane_fit.message;
+  ASSERT_TRUE(plane_fit.status.ok()) << plane_fit.status.error;
   ASSERT_EQ(plane_fit.primitive.type, PrimitiveType::Plane);
   Primitive plane = *s.edited();
   plane.origin = Eigen::Vector3d(0, 0, 4.2);
-  ASSERT_TRUE(s.set_edited(plane).ok);
+  ASSERT_TRUE(s.set_edited(plane).status.ok());
   const ApplyOutcome applied = s.apply();
-  ASSERT_TRUE(applied.ok) << applied.message;
+  ASSERT_TRUE(applied.status.ok()) << applied.status.error;
   EXPECT_GE(applied.report.edge_vertices, kAround);
   for (int j = 0; j < kAround; ++j) {
     const auto& p = m.vert[std::size_t(kRings * kAround + j)].cP();
@@ -284,7 +284,7 @@ TYPED_TEST(EditSessionTest, ApplyMakesSharpEdgesAgainstSnappedNeighbours)
   // Merging the two caps keeps the side's record (under its id after the merge) and drops the caps'.
   ASSERT_TRUE(s.pick(kFirstTopFace, false));
   ASSERT_TRUE(s.pick(kFirstBottomFace, true));
-  ASSERT_TRUE(s.merge_picked().ok);
+  ASSERT_TRUE(s.merge_picked().status.ok());
   const SegmentPrimitives recorded = read_segment_primitives(m, s.segment_count());
   ASSERT_TRUE(recorded[std::size_t(s.segment_of(0))].has_value());
   EXPECT_EQ(recorded[std::size_t(s.segment_of(0))]->type, PrimitiveType::Cylinder);
@@ -294,32 +294,32 @@ TYPED_TEST(EditSessionTest, ApplyMakesSharpEdgesAgainstSnappedNeighbours)
 TYPED_TEST(EditSessionTest, RefusesWhatCannotBeDone)
 {
   auto& s = this->session;
-  EXPECT_FALSE(s.merge_picked().ok);                       // nothing picked
-  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 1}).ok);
-  EXPECT_FALSE(s.apply().ok);                              // nothing fitted
-  EXPECT_FALSE(s.fit(PrimitiveType::Plane).ok);            // nothing picked
+  EXPECT_FALSE(s.merge_picked().status.ok());                       // nothing picked
+  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 1}).status.ok());
+  EXPECT_FALSE(s.apply().status.ok());                              // nothing fitted
+  EXPECT_FALSE(s.fit(PrimitiveType::Plane).status.ok());            // nothing picked
   ASSERT_TRUE(s.pick(0, false));
-  EXPECT_FALSE(s.merge_picked().ok);                       // one segment only
-  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 0}).ok);
-  EXPECT_FALSE(s.split_picked_by_plane({NAN, 0, 1}, {0, 0, 1}).ok);
-  EXPECT_FALSE(s.set_edited(Primitive()).ok);              // no fit yet
-  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).ok);
+  EXPECT_FALSE(s.merge_picked().status.ok());                       // one segment only
+  EXPECT_FALSE(s.split_picked_by_plane({0, 0, 1}, {0, 0, 0}).status.ok());
+  EXPECT_FALSE(s.split_picked_by_plane({NAN, 0, 1}, {0, 0, 1}).status.ok());
+  EXPECT_FALSE(s.set_edited(Primitive()).status.ok());              // no fit yet
+  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).status.ok());
   Primitive bad = *s.edited();
   bad.radius = -1;
-  EXPECT_FALSE(s.set_edited(bad).ok);
+  EXPECT_FALSE(s.set_edited(bad).status.ok());
   bad.type = PrimitiveType::Sphere;
   bad.radius = 1;
-  EXPECT_FALSE(s.set_edited(bad).ok);                      // another type needs another fit
+  EXPECT_FALSE(s.set_edited(bad).status.ok());                      // another type needs another fit
   EXPECT_EQ(s.edited()->type, PrimitiveType::Cylinder);
   const Camera camera;
   EXPECT_FALSE(s.split_picked_by_screen_line({5, 5}, {5, 5}, camera.modelview, camera.projection,
-                                             camera.viewport).ok);
+                                             camera.viewport).status.ok());
 
   // The mesh changed behind the session's back: refuse, do not crash.
   vcg::tri::Allocator<TypeParam>::AddFace(this->mesh, &this->mesh.vert[0], &this->mesh.vert[1],
                                          &this->mesh.vert[2]);
-  EXPECT_FALSE(s.merge_picked().ok);
-  EXPECT_FALSE(s.apply().ok);
+  EXPECT_FALSE(s.merge_picked().status.ok());
+  EXPECT_FALSE(s.apply().status.ok());
   EXPECT_FALSE(s.undo());
   s.detach();
   EXPECT_FALSE(s.attached());
@@ -330,15 +330,15 @@ TYPED_TEST(EditSessionTest, AttachRefusesEmptyMeshesAndPointClouds)
 {
   TypeParam empty;
   PrimitiveEditSession<TypeParam> s;
-  EXPECT_FALSE(s.attach(empty).ok);
+  EXPECT_FALSE(s.attach(empty).status.ok());
   EXPECT_FALSE(s.attached());
   TypeParam cloud;
   vcg::tri::Allocator<TypeParam>::AddVertices(cloud, 10);
   const EditOutcome outcome = s.attach(cloud);
-  EXPECT_FALSE(outcome.ok);
-  EXPECT_NE(outcome.message.find("point cloud"), std::string::npos);
+  EXPECT_FALSE(outcome.status.ok());
+  EXPECT_NE(outcome.status.error.find("point cloud"), std::string::npos);
   EXPECT_FALSE(s.pick(0, false));
-  EXPECT_FALSE(s.auto_segment(SegmentByNormalAngleParams()).ok);
+  EXPECT_FALSE(s.auto_segment(SegmentByNormalAngleParams()).status.ok());
 }
 
 } // namespace

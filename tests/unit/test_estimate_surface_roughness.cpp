@@ -80,10 +80,10 @@ TEST(AutoFitTolerance, ARoughSegmentIsAPrimitiveWhenTheRoughnessIsKnown)
   Sample s = sample_primitive(make_plane({0, 0, 0}, {0, 0, 1}), Patch(), 2000, 5);
   add_noise(&s, 0.1, 2.0, 6);
   const AutoFitResult unknown = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
-  EXPECT_FALSE(unknown.ok);
+  EXPECT_FALSE(unknown.status.ok());
   AutoFitOptions options;
   options.roughness = 0.1;
   const AutoFitResult known = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options);
-  ASSERT_TRUE(known.ok) << known.message;
+  ASSERT_TRUE(known.status.ok()) << known.status.error;
   EXPECT_EQ(known.best.primitive.type, PrimitiveType::Plane);
 }

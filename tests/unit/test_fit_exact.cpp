@@ -32,7 +32,7 @@ double distance_to_line(const Eigen::Vector3d& p, const Eigen::Vector3d& origin,
 
 void expect_fit_quality(const FitResult& r, const Sample& s, double size)
 {
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_TRUE(primitive_is_valid(r.primitive));
   EXPECT_LT(r.rms, kTol * size);
   EXPECT_LT(r.max_residual, kTol * size);

@@ -29,12 +29,12 @@ TEST(FitInput, TooFewPointsRejectedWithMessage)
   for (PrimitiveType t : kTypes) {
     const Sample s = cylinder_sample(minimum_points_for(t) - 1);
     const FitResult r = fit_primitive(t, s.points, s.normals, Eigen::VectorXd());
-    EXPECT_FALSE(r.ok) << primitive_type_name(t);
-    EXPECT_NE(r.message.find("too few points"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok()) << primitive_type_name(t);
+    EXPECT_NE(r.status.error.find("too few points"), std::string::npos) << r.status.error;
   }
   const AutoFitResult a = fit_primitive_auto(Eigen::MatrixX3d(), Eigen::MatrixX3d(), Eigen::VectorXd());
-  EXPECT_FALSE(a.ok);
-  EXPECT_FALSE(a.message.empty());
+  EXPECT_FALSE(a.status.ok());
+  EXPECT_FALSE(a.status.error.empty());
 }
 
 TEST(FitInput, ZeroWeightsDoNotCountAsPoints)
@@ -42,10 +42,10 @@ TEST(FitInput, ZeroWeightsDoNotCountAsPoints)
   const Sample s = cylinder_sample(50);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(50);
   w.head(4).setOnes();
-  EXPECT_FALSE(fit_cylinder(s.points, s.normals, w).ok);
+  EXPECT_FALSE(fit_cylinder(s.points, s.normals, w).status.ok());
   w.head(20).setOnes();
   const FitResult r = fit_cylinder(s.points, s.normals, w);
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_EQ(r.point_count, 20);
 }
 
@@ -55,16 +55,16 @@ TEST(FitInput, NonFiniteValuesRejected)
     Sample s = cylinder_sample(100);
     s.points(17, 1) = std::numeric_limits<double>::quiet_NaN();
     FitResult r = fit_primitive(t, s.points, s.normals, Eigen::VectorXd());
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.message.find("non-finite"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("non-finite"), std::string::npos) << r.status.error;
     s = cylinder_sample(100);
     s.normals(3, 0) = std::numeric_limits<double>::infinity();
     r = fit_primitive(t, s.points, s.normals, Eigen::VectorXd());
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.message.find("non-finite"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("non-finite"), std::string::npos) << r.status.error;
     Eigen::VectorXd w = Eigen::VectorXd::Ones(100);
     w[5] = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_FALSE(fit_primitive(t, cylinder_sample(100).points, Eigen::MatrixX3d(), w).ok);
+    EXPECT_FALSE(fit_primitive(t, cylinder_sample(100).points, Eigen::MatrixX3d(), w).status.ok());
   }
 }
 
@@ -74,16 +74,16 @@ TEST(FitInput, MismatchedSizesAndNegativeWeightsRejected)
   const Eigen::MatrixX3d short_normals = s.normals.topRows(50);
   for (PrimitiveType t : kTypes) {
     FitResult r = fit_primitive(t, s.points, short_normals, Eigen::VectorXd());
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.message.find("normals"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("normals"), std::string::npos) << r.status.error;
     r = fit_primitive(t, s.points, s.normals, Eigen::VectorXd::Ones(99));
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.message.find("weights"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("weights"), std::string::npos) << r.status.error;
     Eigen::VectorXd w = Eigen::VectorXd::Ones(100);
     w[7] = -1;
     r = fit_primitive(t, s.points, s.normals, w);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.message.find("non-negative"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("non-negative"), std::string::npos) << r.status.error;
   }
 }
 
@@ -93,12 +93,12 @@ TEST(FitInput, CoplanarPointsGiveNoSphere)
   const Sample s = sample_primitive(make_plane({1, 2, 3}, {0, 1, 1}), patch, 300, 9);
   for (bool with_normals : {true, false}) {
     const FitResult r = fit_sphere(s.points, with_normals ? s.normals : Eigen::MatrixX3d(), Eigen::VectorXd());
-    if (r.ok)
+    if (r.status.ok())
       ADD_FAILURE() << "sphere of radius " << r.primitive.radius << " on coplanar points";
-    EXPECT_FALSE(r.message.empty());
+    EXPECT_FALSE(r.status.error.empty());
   }
   const AutoFitResult a = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
-  ASSERT_TRUE(a.ok) << a.message;
+  ASSERT_TRUE(a.status.ok()) << a.status.error;
   EXPECT_EQ(a.best.primitive.type, PrimitiveType::Plane);
 }
 
@@ -111,15 +111,15 @@ TEST(FitInput, CoincidentOrCollinearPointsNeverGiveNaN)
   for (const Eigen::MatrixX3d* pts : {&same, &line})
     for (PrimitiveType t : kTypes) {
       const FitResult r = fit_primitive(t, *pts, Eigen::MatrixX3d(), Eigen::VectorXd());
-      if (r.ok) {
+      if (r.status.ok()) {
         EXPECT_TRUE(primitive_is_valid(r.primitive)) << primitive_type_name(t);
         EXPECT_TRUE(std::isfinite(r.rms));
       } else {
-        EXPECT_FALSE(r.message.empty()) << primitive_type_name(t);
+        EXPECT_FALSE(r.status.error.empty()) << primitive_type_name(t);
       }
     }
-  EXPECT_FALSE(fit_plane(line, Eigen::MatrixX3d(), Eigen::VectorXd()).ok);
-  EXPECT_FALSE(fit_primitive_auto(same, Eigen::MatrixX3d(), Eigen::VectorXd()).ok);
+  EXPECT_FALSE(fit_plane(line, Eigen::MatrixX3d(), Eigen::VectorXd()).status.ok());
+  EXPECT_FALSE(fit_primitive_auto(same, Eigen::MatrixX3d(), Eigen::VectorXd()).status.ok());
 }
 
 TEST(FitConventions, PlaneNormalFollowsGivenNormalsAndOriginIsProjectedCentroid)
@@ -128,7 +128,7 @@ TEST(FitConventions, PlaneNormalFollowsGivenNormalsAndOriginIsProjectedCentroid)
   for (double sign : {1.0, -1.0}) {
     const Sample s = sample_primitive(make_plane({0, 0, 1}, sign * Eigen::Vector3d(0.2, 0.1, 1)), patch, 200, 3);
     const FitResult r = fit_plane(s.points, s.normals, Eigen::VectorXd());
-    ASSERT_TRUE(r.ok);
+    ASSERT_TRUE(r.status.ok());
     EXPECT_GT(r.primitive.axis.dot(s.normals.row(0).transpose()), 0.999);
     const Eigen::Vector3d centroid = s.points.colwise().mean().transpose();
     EXPECT_LT((r.primitive.origin - centroid).norm(), 1e-9);
@@ -142,7 +142,7 @@ TEST(FitConventions, CylinderOriginIsAxisPointNearestTheCentroid)
   patch.extent = 2;
   const Sample s = sample_primitive(make_cylinder({1, 2, 3}, {0, 1, 1}, 1.5), patch, 300, 4);
   const FitResult r = fit_cylinder(s.points, s.normals, Eigen::VectorXd());
-  ASSERT_TRUE(r.ok);
+  ASSERT_TRUE(r.status.ok());
   const Eigen::Vector3d centroid = s.points.colwise().mean().transpose();
   EXPECT_NEAR((centroid - r.primitive.origin).dot(r.primitive.axis), 0, 1e-9);
   EXPECT_NEAR(r.primitive.axis.norm(), 1, 1e-12);
@@ -160,7 +160,7 @@ TEST(FitConventions, ConeAxisPointsIntoTheOpeningEitherWay)
     const Sample inward{s.points, -s.normals};
     for (const Sample* data : std::initializer_list<const Sample*>{&s, &inward}) {
       const FitResult r = fit_cone(data->points, data->normals, Eigen::VectorXd());
-      ASSERT_TRUE(r.ok);
+      ASSERT_TRUE(r.status.ok());
       EXPECT_GT(r.primitive.axis.dot(truth.axis), 1 - 1e-9);
       EXPECT_GT(r.primitive.half_angle, 0);
       EXPECT_LT(r.primitive.half_angle, kPi / 2);
@@ -182,7 +182,7 @@ TEST(FitConventions, WeightsSelectThePointsThatCount)
   FitOptions plain;
   plain.robust = false;
   const FitResult r = fit_plane(pts, Eigen::MatrixX3d(), w, plain);
-  ASSERT_TRUE(r.ok);
+  ASSERT_TRUE(r.status.ok());
   EXPECT_NEAR(r.primitive.origin.z(), 1, 1e-12);
   EXPECT_EQ(r.point_count, 100);
 }

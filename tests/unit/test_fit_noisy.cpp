@@ -57,7 +57,7 @@ double size_parameter(const Primitive& p)
 
 void expect_radius_within_1_percent(const Case& c, const FitResult& r)
 {
-  ASSERT_TRUE(r.ok) << c.name << ": " << r.message;
+  ASSERT_TRUE(r.status.ok()) << c.name << ": " << r.status.error;
   ASSERT_TRUE(primitive_is_valid(r.primitive));
   EXPECT_EQ(r.primitive.type, c.truth.type);
   if (c.truth.type == PrimitiveType::Plane) {
@@ -82,10 +82,10 @@ TEST(FitNoisy, EachTypeRadiusWithinOnePercentAndAutoChoosesIt)
       SCOPED_TRACE(std::string(c.name) + (with_normals ? " with normals" : " points only"));
       expect_radius_within_1_percent(c, fit_primitive(c.truth.type, s.points, normals, Eigen::VectorXd()));
       const AutoFitResult a = fit_primitive_auto(s.points, normals, Eigen::VectorXd());
-      ASSERT_TRUE(a.ok) << a.message;
+      ASSERT_TRUE(a.status.ok()) << a.status.error;
       ASSERT_EQ(a.candidates.size(), 5u);
       for (int t = 0; t < kPrimitiveTypeCount; ++t)
-        if (a.candidates[static_cast<size_t>(t)].ok) {
+        if (a.candidates[static_cast<size_t>(t)].status.ok()) {
           EXPECT_EQ(a.candidates[static_cast<size_t>(t)].primitive.type, static_cast<PrimitiveType>(t));
         }
       EXPECT_EQ(a.best.primitive.type, c.truth.type)
@@ -124,11 +124,11 @@ TEST(FitNoisy, OutliersBiasTheNonRobustFit)
   FitOptions plain;
   plain.robust = false;
   const FitResult r = fit_primitive(c.truth.type, s.points, s.normals, Eigen::VectorXd(), plain);
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_EQ(r.point_count, 3000);
   EXPECT_GT(r.max_residual, 0.3 * c.size);
   const FitResult robust = fit_primitive(c.truth.type, s.points, s.normals, Eigen::VectorXd());
-  ASSERT_TRUE(robust.ok);
+  ASSERT_TRUE(robust.status.ok());
   EXPECT_LT(robust.rms, 1e-6 * c.size);
 }
 
@@ -140,8 +140,8 @@ TEST(FitNoisy, RandomBlobIsFreeForm)
   for (Eigen::Index i = 0; i < pts.rows(); ++i)
     pts.row(i) << U(rng), U(rng), U(rng);
   const AutoFitResult a = fit_primitive_auto(pts, Eigen::MatrixX3d(), Eigen::VectorXd());
-  EXPECT_FALSE(a.ok);
-  EXPECT_NE(a.message.find("free-form"), std::string::npos) << a.message;
+  EXPECT_FALSE(a.status.ok());
+  EXPECT_NE(a.status.error.find("free-form"), std::string::npos) << a.status.error;
   EXPECT_EQ(a.candidates.size(), 5u);
 }
 
@@ -151,7 +151,7 @@ TEST(FitNoisy, LargeInputIsScreenedOnASubsampleAndRefinedOnAllPoints)
   Sample s = sample_primitive(c.truth, c.patch, 50000, 80);
   add_noise(&s, 0.01 * c.size, 5.0, 81);
   const AutoFitResult a = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
-  ASSERT_TRUE(a.ok) << a.message;
+  ASSERT_TRUE(a.status.ok()) << a.status.error;
   EXPECT_EQ(a.best.primitive.type, PrimitiveType::Cylinder);
   EXPECT_GT(a.best.point_count, 49000);
   EXPECT_EQ(a.candidates[2].point_count, a.best.point_count);

@@ -1,6 +1,6 @@
 // Numerical robustness of the fits on ill-conditioned data: nearly collinear and nearly coplanar points, a
 // cylinder arc of a few degrees, cones of half-angle near 0 and 90 degrees, a torus whose tube nearly fills
-// its hole. Every fit must give either ok == false with a message, or a valid primitive (no NaN) whose
+// its hole. Every fit must give either a failed status, or a valid primitive (no NaN) whose
 // reported residuals are the true ones and small; where the data determine the primitive, its parameters.
 #include "common/base/constants.h"
 #include "common/geometry/closest_point_on_primitive.h"
@@ -25,12 +25,12 @@ double extent_of(const Eigen::MatrixX3d& points)
   return (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
 }
 
-// ok == false must say why; ok == true must be valid, with the reported RMS equal to the recomputed one
+// A failed status must say why; a successful fit must be valid, with the reported RMS equal to the recomputed one
 // (robust off: every point counts) and at most max_rms.
 void expect_trustworthy(const FitResult& r, const Eigen::MatrixX3d& points, double max_rms, const std::string& what)
 {
-  if (!r.ok) {
-    EXPECT_FALSE(r.message.empty()) << what << ": a failed fit must say why";
+  if (!r.status.ok()) {
+    EXPECT_FALSE(r.status.error.empty()) << what << ": a failed fit must say why";
     return;
   }
   ASSERT_TRUE(primitive_is_valid(r.primitive)) << what << ": ok with an invalid primitive";
@@ -69,15 +69,15 @@ void fit_every_type(const test_fit::Sample& s, PrimitiveType own, double max_rms
   auto_options.fit = plain();
   const AutoFitResult a = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), auto_options);
   for (const FitResult& c : a.candidates) {
-    if (c.ok) {
+    if (c.status.ok()) {
       EXPECT_TRUE(primitive_is_valid(c.primitive)) << what << " / auto candidate";
     }
   }
   // ok from the auto fit promises its own tolerance only: 1% of the data's diagonal.
-  if (a.ok)
+  if (a.status.ok())
     expect_trustworthy(a.best, s.points, std::max(max_rms, 0.01 * extent_of(s.points)), what + " / auto");
   else
-    EXPECT_FALSE(a.message.empty()) << what;
+    EXPECT_FALSE(a.status.error.empty()) << what;
 }
 
 TEST(FitRobustness, NearlyCollinearPoints)
@@ -98,7 +98,7 @@ TEST(FitRobustness, NearlyCollinearPoints)
     fit_every_type(s, PrimitiveType::Cylinder, 0.01 * extent, "collinear, jitter " + std::to_string(jitter));
     // The documented sphere guard: no sphere of absurd radius on (nearly) collinear data.
     const FitResult sphere = fit_primitive(PrimitiveType::Sphere, s.points, s.normals, Eigen::VectorXd(), plain());
-    if (sphere.ok) {
+    if (sphere.status.ok()) {
       EXPECT_LT(sphere.primitive.radius, 1e4 * extent) << "jitter " << jitter;
     }
   }
@@ -116,11 +116,11 @@ TEST(FitRobustness, NearlyCoplanarPointsGiveNoAbsurdSphere)
     const double extent = extent_of(s.points);
     fit_every_type(s, PrimitiveType::Plane, 0.01 * extent, "coplanar, noise " + std::to_string(bulge));
     const FitResult sphere = fit_primitive(PrimitiveType::Sphere, s.points, s.normals, Eigen::VectorXd(), plain());
-    if (sphere.ok) {
+    if (sphere.status.ok()) {
       EXPECT_LT(sphere.primitive.radius, 1e4 * extent) << "noise " << bulge;
     }
     const FitResult plane = fit_primitive(PrimitiveType::Plane, s.points, s.normals, Eigen::VectorXd(), plain());
-    ASSERT_TRUE(plane.ok) << plane.message;
+    ASSERT_TRUE(plane.status.ok()) << plane.status.error;
     EXPECT_NEAR(std::abs(plane.primitive.axis.dot(Eigen::Vector3d(0, 1, 1).normalized())), 1.0, 1e-6);
   }
 }
@@ -141,7 +141,7 @@ TEST(FitRobustness, CylinderArcOfAFewDegrees)
     fit_every_type(s, PrimitiveType::Cylinder, 1e-3, what);
     // Exact data with exact normals determine the cylinder even on a short arc.
     const FitResult r = fit_primitive(PrimitiveType::Cylinder, s.points, s.normals, Eigen::VectorXd(), plain());
-    ASSERT_TRUE(r.ok) << what << ": " << r.message;
+    ASSERT_TRUE(r.status.ok()) << what << ": " << r.status.error;
     EXPECT_NEAR(r.primitive.radius, 10.0, 0.01 * 10.0) << what;
     EXPECT_NEAR(std::abs(r.primitive.axis.dot(c.axis)), 1.0, 1e-4) << what;
 
@@ -170,7 +170,7 @@ TEST(FitRobustness, ConeHalfAngleNearZeroAndNinety)
     const double extent = extent_of(s.points);
     fit_every_type(s, PrimitiveType::Cone, 1e-3 * extent, what);
     const FitResult r = fit_primitive(PrimitiveType::Cone, s.points, s.normals, Eigen::VectorXd(), plain());
-    ASSERT_TRUE(r.ok) << what << ": " << r.message;
+    ASSERT_TRUE(r.status.ok()) << what << ": " << r.status.error;
     expect_trustworthy(r, s.points, 1e-6 * extent, what + " (exact data)");
   }
 }
@@ -190,7 +190,7 @@ TEST(FitRobustness, TorusWithTubeNearlyFillingTheHole)
     const double extent = extent_of(s.points);
     fit_every_type(s, PrimitiveType::Torus, 0.01 * extent, what);
     const FitResult r = fit_primitive(PrimitiveType::Torus, s.points, s.normals, Eigen::VectorXd(), plain());
-    ASSERT_TRUE(r.ok) << what << ": " << r.message;
+    ASSERT_TRUE(r.status.ok()) << what << ": " << r.status.error;
     EXPECT_NEAR(r.primitive.radius, 2.0, 0.02) << what;
     EXPECT_NEAR(r.primitive.minor_radius, ratio * 2.0, 0.02) << what;
   }
@@ -215,17 +215,17 @@ TEST(FitRobustness, DuplicatedAndExtremePointsNeverGiveNaN)
     const test_fit::Sample& s = inputs[k];
     for (int t = 0; t < kPrimitiveTypeCount; ++t) {
       const FitResult r = fit_primitive(static_cast<PrimitiveType>(t), s.points, s.normals, Eigen::VectorXd(), plain());
-      if (r.ok) {
+      if (r.status.ok()) {
         EXPECT_TRUE(primitive_is_valid(r.primitive)) << "input " << k << " type " << t;
         EXPECT_TRUE(std::isfinite(r.rms)) << "input " << k << " type " << t;
       } else {
-        EXPECT_FALSE(r.message.empty()) << "input " << k << " type " << t;
+        EXPECT_FALSE(r.status.error.empty()) << "input " << k << " type " << t;
       }
     }
   }
   // The far sphere is still a sphere (double precision has room for 1e6 offsets).
   const FitResult r = fit_primitive(PrimitiveType::Sphere, inputs[2].points, inputs[2].normals, Eigen::VectorXd(), plain());
-  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_NEAR(r.primitive.radius, 3.0, 1e-6);
 }
 

@@ -6,7 +6,7 @@
 
 #include "test_mesh.h"
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_test_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +19,7 @@ namespace {
 
 using primitive_edit::AccuracyReport;
 using primitive_edit::SurfaceDistanceIndex;
+using primitive_edit::Status;
 
 
 template <class M>
@@ -86,7 +87,7 @@ Eigen::Vector3d barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a, 
 template <class M>
 class MeasureAccuracyTest : public ::testing::Test {};
 
-using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+using MeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh>;
 TYPED_TEST_SUITE(MeasureAccuracyTest, MeshTypes);
 
 TYPED_TEST(MeasureAccuracyTest, PlateAgainstOffsetPlaneIsAtTheOffsetEverywhere)
@@ -94,14 +95,15 @@ TYPED_TEST(MeasureAccuracyTest, PlateAgainstOffsetPlaneIsAtTheOffsetEverywhere)
   TypeParam measured, reference;
   make_plate(measured, 4, 1.0, 0.0);
   make_plate(reference, 7, 3.0, 0.3);  // larger, so every sample is above its interior
-  std::string error;
-  const Eigen::MatrixX3d samples = primitive_edit::sample_surface_uniform(measured, 20000, 1, &error);
-  ASSERT_EQ(samples.rows(), 20000) << error;
+  Eigen::MatrixX3d samples;
+  const Status sampled = primitive_edit::sample_surface_uniform(measured, 20000, 1, &samples);
+  ASSERT_TRUE(sampled.ok()) << sampled.error;
+  ASSERT_EQ(samples.rows(), 20000);
 
   SurfaceDistanceIndex index(reference);
-  ASSERT_TRUE(index.ok()) << index.error();
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
   AccuracyReport r = primitive_edit::measure_accuracy(samples, index, 0.42, true);
-  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_EQ(r.sample_count, 20000);
   EXPECT_DOUBLE_EQ(r.within_tolerance_share, 1.0);
   EXPECT_NEAR(r.mean, 0.3, 1e-6);
@@ -114,7 +116,7 @@ TYPED_TEST(MeasureAccuracyTest, PlateAgainstOffsetPlaneIsAtTheOffsetEverywhere)
   EXPECT_EQ(r.histogram[3], 20000);
 
   r = primitive_edit::measure_accuracy(samples, index, 0.2);
-  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_DOUBLE_EQ(r.within_tolerance_share, 0.0);
   EXPECT_EQ(r.histogram[7], 20000);  // 0.3 / (2 * 0.2 / 10) = 7.5
   EXPECT_EQ(r.distances.size(), 0);
@@ -126,14 +128,15 @@ TYPED_TEST(MeasureAccuracyTest, SphereAgainstLargerSphereMatchesRadialGap)
   make_sphere(measured, 1.0, 60, 120);
   const int stacks = 100, slices = 200;
   make_sphere(reference, 1.1, stacks, slices);
-  const Eigen::MatrixX3d samples = primitive_edit::sample_surface_uniform(measured, 5000, 7);
+  Eigen::MatrixX3d samples;
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(measured, 5000, 7, &samples).ok());
   ASSERT_EQ(samples.rows(), 5000);
   SurfaceDistanceIndex index(reference);
-  ASSERT_TRUE(index.ok()) << index.error();
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
   // The poles' degenerate triangles are left out of the index.
   EXPECT_EQ(index.skipped_face_count(), 2 * slices);
   const AccuracyReport r = primitive_edit::measure_accuracy(samples, index, 0.05, true);
-  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   // The tessellated reference lies between radius 1.1 cos(step) and 1.1 (step = the larger angular step),
   // so each distance is the radial gap 1.1 - |p| up to that sagitta.
   const double step = 2.0 * primitive_edit::kPi / slices;
@@ -155,7 +158,7 @@ TYPED_TEST(MeasureAccuracyTest, GridQueriesMatchBruteForceNearAndFar)
   for (auto& v : reference.vert)  // bumpy, so that closest points fall on faces, edges and vertices
     v.P() += typename TypeParam::CoordType(noise(rng), noise(rng), noise(rng));
   SurfaceDistanceIndex index(reference);
-  ASSERT_TRUE(index.ok()) << index.error();
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
 
   // Points inside, near and far outside the sphere (the grid spans about [-1, 1]^3).
   std::uniform_real_distribution<double> coord(-3.0, 3.0);
@@ -179,17 +182,17 @@ TYPED_TEST(MeasureAccuracyTest, GridQueriesMatchBruteForceNearAndFar)
   }
   // All together, in spatial order.
   Eigen::VectorXd batch;
-  ASSERT_TRUE(index.distances(points, batch));
+  ASSERT_TRUE(index.distances(points, batch).ok());
   ASSERT_EQ(batch.size(), points.rows());
   EXPECT_LT((batch - expected).cwiseAbs().maxCoeff(), 1e-12);
   // Any grid density gives the same distances (0.5: tiny cells, capped; 20: a handful of cells).
   for (double factor : {0.5, 20.0}) {
     SurfaceDistanceIndex other(reference, Eigen::Affine3d::Identity(), factor);
-    ASSERT_TRUE(other.distances(points, batch));
+    ASSERT_TRUE(other.distances(points, batch).ok());
     EXPECT_LT((batch - expected).cwiseAbs().maxCoeff(), 1e-12) << "cell size factor " << factor;
   }
   points(7, 2) = std::numeric_limits<double>::infinity();
-  EXPECT_FALSE(index.distances(points, batch));
+  EXPECT_FALSE(index.distances(points, batch).ok());
   EXPECT_EQ(batch.size(), 0);
 }
 
@@ -202,9 +205,10 @@ TYPED_TEST(MeasureAccuracyTest, SamplesPerFaceAreProportionalToArea)
                      {0, 0, 1}, {0, 3, 1}, {0, 0, 3}});
   const Eigen::Index n = 100000;
   Eigen::VectorXi faces;
-  std::string error;
-  const Eigen::MatrixX3d s = primitive_edit::sample_surface_uniform(m, n, 11, &error, &faces);
-  ASSERT_EQ(s.rows(), n) << error;
+  Eigen::MatrixX3d s;
+  const Status sampled = primitive_edit::sample_surface_uniform(m, n, 11, &s, &faces);
+  ASSERT_TRUE(sampled.ok()) << sampled.error;
+  ASSERT_EQ(s.rows(), n);
   ASSERT_EQ(faces.size(), n);
   const double p[3] = {0.1, 0.3, 0.6};
   int count[3] = {0, 0, 0};
@@ -236,9 +240,10 @@ TYPED_TEST(MeasureAccuracyTest, SeededSamplingIsReproducible)
 {
   TypeParam m;
   make_sphere(m, 2.0, 10, 20);
-  const Eigen::MatrixX3d a = primitive_edit::sample_surface_uniform(m, 1000, 42);
-  const Eigen::MatrixX3d b = primitive_edit::sample_surface_uniform(m, 1000, 42);
-  const Eigen::MatrixX3d c = primitive_edit::sample_surface_uniform(m, 1000, 43);
+  Eigen::MatrixX3d a, b, c;
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 1000, 42, &a).ok());
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 1000, 42, &b).ok());
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 1000, 43, &c).ok());
   ASSERT_EQ(a.rows(), 1000);
   EXPECT_TRUE(a == b);
   EXPECT_FALSE(a == c);
@@ -252,63 +257,81 @@ TYPED_TEST(MeasureAccuracyTest, DegenerateAndNonFiniteFacesAreSkipped)
                      {0, 0, 0}, {nan, 0, 0}, {0, 1, 0},        // NaN vertex
                      {0, 0, 5}, {1, 0, 5}, {0, 1, 5}});        // the only usable face
   Eigen::VectorXi faces;
-  const Eigen::MatrixX3d s = primitive_edit::sample_surface_uniform(m, 500, 5, nullptr, &faces);
+  Eigen::MatrixX3d s;
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 500, 5, &s, &faces).ok());
   ASSERT_EQ(s.rows(), 500);
   EXPECT_TRUE(s.allFinite());
   EXPECT_TRUE((faces.array() == 2).all());
   EXPECT_TRUE((s.col(2).array() == 5.0).all());
 
   SurfaceDistanceIndex index(m);
-  ASSERT_TRUE(index.ok()) << index.error();
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
   EXPECT_EQ(index.triangle_count(), 1);
   EXPECT_EQ(index.skipped_face_count(), 2);
   EXPECT_NEAR(index.distance(Eigen::Vector3d(0.25, 0.25, 0.0)), 5.0, 1e-12);
 }
 
+TYPED_TEST(MeasureAccuracyTest, AFlatMeshFarFromTheOriginIsIndexedWithoutCollapsingTheGrid)
+{
+  // Found by the fuzz target: at z = 1e32 a cell of the plate's size is below the coordinates' precision, so the
+  // grid's box had zero height and cell indices were NaN.
+  TypeParam far;
+  make_plate(far, 4, 300.0, 1e32);
+  SurfaceDistanceIndex index(far);
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
+  const double z = double(far.vert[0].cP()[2]);  // 1e32 as the mesh's scalar stores it
+  EXPECT_EQ(index.distance(Eigen::Vector3d(10.0, 20.0, z)), 0.0);
+  EXPECT_TRUE(std::isfinite(index.distance(Eigen::Vector3d(1e3, -1e3, z))));
+}
+
 TYPED_TEST(MeasureAccuracyTest, BadInputFailsWithAMessage)
 {
   TypeParam empty;
-  std::string error;
-  EXPECT_EQ(primitive_edit::sample_surface_uniform(empty, 10, 0, &error).rows(), 0);
-  EXPECT_EQ(error, "the mesh has no faces");
+  Eigen::MatrixX3d none = Eigen::MatrixX3d::Ones(3, 3);
+  Status sampled = primitive_edit::sample_surface_uniform(empty, 10, 0, &none);
+  EXPECT_EQ(none.rows(), 0);
+  EXPECT_EQ(sampled.error, "the mesh has no faces");
 
   TypeParam flat;
   make_triangles(flat, {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}});
-  EXPECT_EQ(primitive_edit::sample_surface_uniform(flat, 10, 0, &error).rows(), 0);
-  EXPECT_NE(error.find("no face with a positive"), std::string::npos) << error;
+  sampled = primitive_edit::sample_surface_uniform(flat, 10, 0, &none);
+  EXPECT_EQ(none.rows(), 0);
+  EXPECT_NE(sampled.error.find("no face with a positive"), std::string::npos) << sampled.error;
 
   TypeParam plate;
   make_plate(plate, 2, 1.0, 0.0);
-  EXPECT_EQ(primitive_edit::sample_surface_uniform(plate, 0, 0, &error).rows(), 0);
-  EXPECT_NE(error.find("at least 1"), std::string::npos) << error;
+  sampled = primitive_edit::sample_surface_uniform(plate, 0, 0, &none);
+  EXPECT_EQ(none.rows(), 0);
+  EXPECT_NE(sampled.error.find("at least 1"), std::string::npos) << sampled.error;
 
   const SurfaceDistanceIndex no_faces(empty);
-  EXPECT_FALSE(no_faces.ok());
-  EXPECT_EQ(no_faces.error(), "the reference mesh has no faces");
+  EXPECT_FALSE(no_faces.status().ok());
+  EXPECT_EQ(no_faces.status().error, "the reference mesh has no faces");
   const SurfaceDistanceIndex degenerate(flat);
-  EXPECT_FALSE(degenerate.ok());
-  EXPECT_NE(degenerate.error().find("positive area"), std::string::npos) << degenerate.error();
+  EXPECT_FALSE(degenerate.status().ok());
+  EXPECT_NE(degenerate.status().error.find("positive area"), std::string::npos) << degenerate.status().error;
 
-  const Eigen::MatrixX3d samples = primitive_edit::sample_surface_uniform(plate, 100, 0);
+  Eigen::MatrixX3d samples;
+  ASSERT_TRUE(primitive_edit::sample_surface_uniform(plate, 100, 0, &samples).ok());
   AccuracyReport r = primitive_edit::measure_accuracy(samples, empty, 0.42);
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.error, "the reference mesh has no faces");
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_EQ(r.status.error, "the reference mesh has no faces");
 
   SurfaceDistanceIndex index(plate);
-  ASSERT_TRUE(index.ok());
+  ASSERT_TRUE(index.status().ok());
   for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     r = primitive_edit::measure_accuracy(samples, index, bad);
-    EXPECT_FALSE(r.ok) << bad;
-    EXPECT_NE(r.error.find("tolerance"), std::string::npos) << r.error;
+    EXPECT_FALSE(r.status.ok()) << bad;
+    EXPECT_NE(r.status.error.find("tolerance"), std::string::npos) << r.status.error;
   }
   Eigen::MatrixX3d with_nan = samples;
   with_nan(5, 1) = std::numeric_limits<double>::quiet_NaN();
   r = primitive_edit::measure_accuracy(with_nan, index, 0.42);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("NaN"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_NE(r.status.error.find("NaN"), std::string::npos) << r.status.error;
   r = primitive_edit::measure_accuracy(Eigen::MatrixX3d(0, 3), index, 0.42);
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.error, "there are no sample points");
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_EQ(r.status.error, "there are no sample points");
 }
 
 TYPED_TEST(MeasureAccuracyTest, VertexDistancesGiveTheDeviationOfEveryVertex)
@@ -319,8 +342,8 @@ TYPED_TEST(MeasureAccuracyTest, VertexDistancesGiveTheDeviationOfEveryVertex)
   vcg::tri::Allocator<TypeParam>::DeleteVertex(measured, measured.vert[0]);  // deleted vertices get 0
   SurfaceDistanceIndex index(reference);
   Eigen::VectorXd d;
-  std::string error;
-  ASSERT_TRUE(primitive_edit::vertex_distances(measured, index, d, error)) << error;
+  Status measured_ok = primitive_edit::vertex_distances(measured, index, d);
+  ASSERT_TRUE(measured_ok.ok()) << measured_ok.error;
   ASSERT_EQ(d.size(), Eigen::Index(measured.vert.size()));
   EXPECT_EQ(d(0), 0.0);
   for (Eigen::Index i = 1; i < d.size(); ++i)
@@ -329,12 +352,14 @@ TYPED_TEST(MeasureAccuracyTest, VertexDistancesGiveTheDeviationOfEveryVertex)
   // The layer transform moves the measured mesh 1.0 up: 1.25 from the reference.
   Eigen::Affine3d up = Eigen::Affine3d::Identity();
   up.translate(Eigen::Vector3d(0, 0, 1.0));
-  ASSERT_TRUE(primitive_edit::vertex_distances(measured, index, d, error, up)) << error;
+  measured_ok = primitive_edit::vertex_distances(measured, index, d, up);
+  ASSERT_TRUE(measured_ok.ok()) << measured_ok.error;
   EXPECT_NEAR(d(4), 1.25, 1e-6);
 
   measured.vert[3].P()[2] = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_FALSE(primitive_edit::vertex_distances(measured, index, d, error));
-  EXPECT_NE(error.find("vertex 3"), std::string::npos) << error;
+  measured_ok = primitive_edit::vertex_distances(measured, index, d);
+  EXPECT_FALSE(measured_ok.ok());
+  EXPECT_NE(measured_ok.error.find("vertex 3"), std::string::npos) << measured_ok.error;
 }
 
 TEST(SummarizeAccuracy, ShareMeanRmsMaxAndHistogramFromKnownDistances)
@@ -342,7 +367,7 @@ TEST(SummarizeAccuracy, ShareMeanRmsMaxAndHistogramFromKnownDistances)
   Eigen::VectorXd d(5);
   d << 0.0, 0.1, 0.42, 0.5, 2.0;
   const AccuracyReport r = primitive_edit::summarize_accuracy(d, 0.42);
-  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_DOUBLE_EQ(r.within_tolerance_share, 3.0 / 5.0);  // 0.42 itself is within
   EXPECT_DOUBLE_EQ(r.mean, 3.02 / 5.0);
   EXPECT_DOUBLE_EQ(r.rms, std::sqrt((0.01 + 0.42 * 0.42 + 0.25 + 4.0) / 5.0));
@@ -354,7 +379,7 @@ TEST(SummarizeAccuracy, ShareMeanRmsMaxAndHistogramFromKnownDistances)
 
   Eigen::VectorXd negative(1);
   negative << -0.1;
-  EXPECT_FALSE(primitive_edit::summarize_accuracy(negative, 0.42).ok);
+  EXPECT_FALSE(primitive_edit::summarize_accuracy(negative, 0.42).status.ok());
 }
 
 TEST(ClosestPointOnTriangle, FaceEdgeAndVertexRegions)

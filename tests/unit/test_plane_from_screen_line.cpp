@@ -62,7 +62,7 @@ void expect_plane_contains_screen_line(const Eigen::Matrix4d& mv, const Eigen::M
   const Eigen::Vector4d vp(10, 20, 640, 480);
   const Eigen::Vector2d a(100, 300), b(500, 150);
   const ScreenLinePlane plane = plane_from_screen_line(a, b, mv, pr, vp);
-  ASSERT_TRUE(plane.ok) << plane.message;
+  ASSERT_TRUE(plane.status.ok()) << plane.status.error;
   EXPECT_NEAR(plane.normal.norm(), 1.0, 1e-12);
   // Points that project onto the line, at any depth, lie on the plane; points off the line do not, and
   // the side of the plane follows the side of the line on screen.
@@ -107,7 +107,7 @@ TEST(PlaneFromScreenLine, HorizontalLineThroughCentreIsTheHorizontalPlane)
   mv(2, 3) = -20;
   const ScreenLinePlane plane =
       plane_from_screen_line({0, 400}, {800, 400}, mv, perspective(kPi / 3, 1, 1, 100), {0, 0, 800, 800});
-  ASSERT_TRUE(plane.ok);
+  ASSERT_TRUE(plane.status.ok());
   EXPECT_NEAR(std::abs(plane.normal.y()), 1.0, 1e-12);
   EXPECT_NEAR(plane.point.y(), 0.0, 1e-9);
 }
@@ -116,15 +116,15 @@ TEST(PlaneFromScreenLine, RefusesDegenerateInput)
 {
   const Eigen::Matrix4d mv = some_modelview(), pr = perspective(kPi / 3, 1, 1, 100);
   const Eigen::Vector4d vp(0, 0, 800, 800);
-  EXPECT_FALSE(plane_from_screen_line({5, 5}, {5, 5}, mv, pr, vp).ok);
-  EXPECT_FALSE(plane_from_screen_line({NAN, 5}, {5, 7}, mv, pr, vp).ok);
-  EXPECT_FALSE(plane_from_screen_line({1, 5}, {5, 7}, mv, pr, {0, 0, 0, 800}).ok);
-  EXPECT_FALSE(plane_from_screen_line({1, 5}, {5, 7}, Eigen::Matrix4d::Zero(), pr, vp).ok);
+  EXPECT_FALSE(plane_from_screen_line({5, 5}, {5, 5}, mv, pr, vp).status.ok());
+  EXPECT_FALSE(plane_from_screen_line({NAN, 5}, {5, 7}, mv, pr, vp).status.ok());
+  EXPECT_FALSE(plane_from_screen_line({1, 5}, {5, 7}, mv, pr, {0, 0, 0, 800}).status.ok());
+  EXPECT_FALSE(plane_from_screen_line({1, 5}, {5, 7}, Eigen::Matrix4d::Zero(), pr, vp).status.ok());
   Eigen::Matrix4d inf = mv;
   inf(0, 0) = std::numeric_limits<double>::infinity();
   const ScreenLinePlane bad = plane_from_screen_line({1, 5}, {5, 7}, inf, pr, vp);
-  EXPECT_FALSE(bad.ok);
-  EXPECT_FALSE(bad.message.empty());
+  EXPECT_FALSE(bad.status.ok());
+  EXPECT_FALSE(bad.status.error.empty());
 }
 
 // Every line end of the wireframe lies on the primitive.

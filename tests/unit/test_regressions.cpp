@@ -31,15 +31,15 @@ TEST(Regression, AccuracyQueryFarFromReference)
   test_mesh::TMesh reference;
   make_unit_square(reference);
   SurfaceDistanceIndex index(reference);
-  ASSERT_TRUE(index.ok()) << index.error();
+  ASSERT_TRUE(index.status().ok()) << index.status().error;
   for (const double far : {1e5, 1e7, 1e9, 1e30}) {
     Eigen::MatrixX3d samples(1, 3);
     samples << far, 0.5, 0.0;
     const AccuracyReport r = measure_accuracy(samples, index, 0.1);
-    if (r.ok) {
+    if (r.status.ok()) {
       EXPECT_NEAR(r.max, far - 1.0, 1e-9 * far) << "query at " << far;
     } else {
-      EXPECT_FALSE(r.error.empty());
+      EXPECT_FALSE(r.status.error.empty());
     }
   }
 }

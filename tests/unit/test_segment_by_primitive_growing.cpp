@@ -8,7 +8,7 @@
 #include "common/mesh/face_adjacency.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_test_mesh.h"
 #include <gtest/gtest.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -155,7 +155,7 @@ void expect_dense_ids(const M& m, const std::vector<int>& seg, int K)
 
 template <class M>
 class PrimitiveGrowingTest : public ::testing::Test {};
-using GrowMeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+using GrowMeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh>;
 TYPED_TEST_SUITE(PrimitiveGrowingTest, GrowMeshTypes);
 
 TYPED_TEST(PrimitiveGrowingTest, NoisyProfileGivesOneSegmentPerCadFace)

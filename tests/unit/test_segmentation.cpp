@@ -5,6 +5,7 @@
 
 #include "common/mesh/color_segments.h"
 #include "common/mesh/compact_segment_ids.h"
+#include "common/mesh/count_segments.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/segment/merge_segments.h"
 #include "common/segment/move_faces_to_new_segment.h"
@@ -13,7 +14,7 @@
 #include "common/mesh/smooth_face_normals.h"
 #include "common/segment/split_segments_by_plane.h"
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_test_mesh.h"
 #include <gtest/gtest.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -38,7 +39,7 @@ class QFace : public vcg::Face<QUsedTypes, vcg::face::VertexRef, vcg::face::Norm
 class QMesh : public vcg::tri::TriMesh<std::vector<QVertex>, std::vector<QFace>> {};
 
 template <class M> void enable_face_quality_and_color(M&) {}
-void enable_face_quality_and_color(CMeshO& m)
+void enable_face_quality_and_color(test_mesh::MeshLabMesh& m)
 {
   m.face.EnableQuality();
   m.face.EnableColor();
@@ -88,8 +89,7 @@ void make_grid_cube(M& m, int n)
   vcg::tri::Allocator<M>::CompactEveryVector(m);
 }
 
-// The checks every operation must pass: one entry per face, -1 exactly on deleted faces, ids dense 0..K-1
-// and numbered in order of first appearance.
+// The checks every operation must pass: one entry per face, -1 exactly on deleted faces, ids dense 0..K-1.
 template <class M>
 void expect_valid_segmentation(const M& m, const std::vector<int>& seg, int K)
 {
@@ -104,23 +104,11 @@ void expect_valid_segmentation(const M& m, const std::vector<int>& seg, int K)
     ASSERT_GE(seg[f], 0) << "live face " << f << " has no segment";
     ASSERT_LT(seg[f], K);
     if (!seen[size_t(seg[f])]) {
-      EXPECT_EQ(seg[f], next) << "ids not in order of first appearance";
       seen[size_t(seg[f])] = 1;
       ++next;
     }
   }
   EXPECT_EQ(next, K) << "some id below K is unused";
-}
-
-// The segment of every face, as a partition: true when a and b group the faces the same way.
-bool same_partition(const std::vector<int>& a, const std::vector<int>& b)
-{
-  if (a.size() != b.size())
-    return false;
-  std::vector<int> ca(a), cb(b);
-  compact_segment_ids(ca);
-  compact_segment_ids(cb);
-  return ca == cb;
 }
 
 // vcg's ~TriMesh does not free per-face attributes (its ClearAttributes call is commented out): tests that
@@ -139,7 +127,7 @@ int count_segments(const std::vector<int>& seg)
 
 template <class M>
 class SegmentationTest : public ::testing::Test {};
-using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO, QMesh>;
+using MeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh, test_mesh::FreesAttributes<QMesh>>;
 TYPED_TEST_SUITE(SegmentationTest, MeshTypes);
 
 TYPED_TEST(SegmentationTest, AdjacencyOfClosedManifoldHasThreeSymmetricNeighbours)
@@ -413,10 +401,14 @@ TYPED_TEST(SegmentationTest, CompactIdsKeepsPartitionAndOrder)
 {
   std::vector<int> seg = {7, 7, -4, 2000000000, 3, 7, -1, 3, 2000000000};
   EXPECT_EQ(compact_segment_ids(seg), 3);
-  EXPECT_EQ(seg, (std::vector<int>{0, 0, -1, 1, 2, 0, -1, 2, 1}));
-  std::vector<int> dense = {5, 1, 5, 0};
+  EXPECT_EQ(seg, (std::vector<int>{1, 1, -1, 2, 0, 1, -1, 0, 2}));
+  std::vector<int> sparse = {5, 1, 5, 0};
+  EXPECT_EQ(compact_segment_ids(sparse), 3);
+  EXPECT_EQ(sparse, (std::vector<int>{2, 1, 2, 0}));
+  // Dense ids in any order are kept as they are: they are the ids the user reads in the face quality.
+  std::vector<int> dense = {2, 0, 1, 2, -1, 0};
   EXPECT_EQ(compact_segment_ids(dense), 3);
-  EXPECT_EQ(dense, (std::vector<int>{0, 1, 0, 2}));
+  EXPECT_EQ(dense, (std::vector<int>{2, 0, 1, 2, -1, 0}));
   std::vector<int> none = {-1, -1};
   EXPECT_EQ(compact_segment_ids(none), 0);
 }
@@ -636,12 +628,24 @@ TYPED_TEST(SegmentationTest, WriteReadRoundTripThroughFaceQualityOnly)
   EXPECT_FALSE(read_segment_ids(m, back));
   m.face[3].Q() = -1.0f;
   EXPECT_FALSE(read_segment_ids(m, back));
-  // Ids stored sparse (as another tool might) are compacted on reading.
+  // Dense ids in an order no segmentation would give (a labelled scan from another tool) are kept.
   m.face[3].Q() = float(seg[3]);
+  const int K = count_segments(seg);
+  std::vector<int> reversed(seg);
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    reversed[f] = K - 1 - seg[f];
+    m.face[f].Q() = float(reversed[f]);
+  }
+  bool renumbered = true;
+  ASSERT_TRUE(read_segment_ids(m, back, &renumbered));
+  EXPECT_EQ(back, reversed);
+  EXPECT_FALSE(renumbered);
+  // Ids stored sparse (as another tool might) are compacted on reading, keeping their order.
   for (auto& f : m.face)
     f.Q() = f.Q() * 10 + 3;
-  ASSERT_TRUE(read_segment_ids(m, back));
-  EXPECT_TRUE(same_partition(back, seg));
+  ASSERT_TRUE(read_segment_ids(m, back, &renumbered));
+  EXPECT_EQ(back, reversed);
+  EXPECT_TRUE(renumbered);
 }
 
 } // namespace

@@ -6,7 +6,7 @@
 #include "plate_with_hole.h"
 #include "test_mesh.h"
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_test_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -166,7 +166,7 @@ Box make_box(const Eigen::Vector3d& size, double h, double round, double noise, 
 template <class M>
 class SnapSegmentsTest : public ::testing::Test {};
 
-using MeshTypes = ::testing::Types<test_mesh::TMesh, CMeshO>;
+using MeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh>;
 TYPED_TEST_SUITE(SnapSegmentsTest, MeshTypes, );
 
 } // namespace

@@ -1,0 +1,69 @@
+// fit_segments.h: fit_segment on every segment of a mesh, on several threads.
+//
+// Input:  the segments' samples (gather_segment_samples.h), optionally a type per segment (std::nullopt or a
+//         missing entry: the automatic type), the options of fit_segment, the number of threads (<= 0:
+//         std::thread::hardware_concurrency()), and an optional Progress (progress.h), called on the calling
+//         thread only (so a GUI callback is safe) after each segment that thread fitted, with the share of
+//         segments done; it may repeat a percentage. Fitting is not cancelled.
+// Output: one FitResult per segment, in segment order; a failed status (free-form, too few points, ...) says
+//         why. The results do not depend on the thread count: each segment is fitted by the same
+//         deterministic code, whichever thread takes it.
+// Method: the segments are handed out one at a time (an atomic counter), largest first, so that a large
+//         segment does not start last and keep one thread busy while the others are idle.
+// Cost:   the sum of the segments' fit costs divided by the threads used, plus O(K log K) for the order.
+#ifndef PRIMITIVE_EDIT_FIT_SEGMENTS_H
+#define PRIMITIVE_EDIT_FIT_SEGMENTS_H
+
+#include "common/base/progress.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/pipeline/fit_segment.h"
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace primitive_edit {
+
+inline std::vector<FitResult> fit_segments(const std::vector<SegmentSamples>& segments,
+                                           const std::vector<std::optional<PrimitiveType>>& types = {},
+                                           const AutoFitOptions& options = {}, int threads = 0,
+                                           const Progress& progress = {})
+{
+  const int count = int(segments.size());
+  std::vector<FitResult> out(segments.size());
+  std::vector<int> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return segments[size_t(a)].points.rows() > segments[size_t(b)].points.rows();
+  });
+
+  std::atomic<int> next{0}, done{0};
+  auto work = [&](bool report) {
+    for (int i = next++; i < count; i = next++) {
+      const int s = order[size_t(i)];
+      const std::optional<PrimitiveType> type = size_t(s) < types.size() ? types[size_t(s)] : std::nullopt;
+      out[size_t(s)] = fit_segment(segments[size_t(s)], type, options);
+      const int finished = ++done;
+      if (report)
+        report_progress(progress, 100 * finished / count, "Fitting primitives");
+    }
+  };
+
+  if (threads <= 0)
+    threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, count));
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads; ++t)
+    helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& h : helpers)
+    h.join();
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif
