@@ -10,6 +10,8 @@
 // segment's size and 3x the scan's roughness, estimate_surface_roughness.h).
 // --labels SEGMENTED.ply skips the segmentation and fits/snaps the segments given as face quality of that
 // PLY (the same scan, e.g. bench/true_segmentation.py's true surfaces: the ceiling of fit-and-snap).
+// --relations 0 fits every segment alone (default 1: relations found and enforced, relate_primitives.h);
+// --relation-angle DEG and --relation-cost SHARE set RelationOptions.
 // --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
 // with that type (fit_primitive, all points) instead of letting fit_primitive_auto choose: the ceiling with the
 // true types.
@@ -17,13 +19,9 @@
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
-#include "common/mesh/estimate_surface_roughness.h"
-#include "common/mesh/face_adjacency.h"
-#include "common/fit/fit_primitive.h"
-#include "common/fit/fit_primitive_auto.h"
-#include "common/mesh/gather_segment_samples.h"
+#include "common/pipeline/fit_all_segments.h"
+#include "common/pipeline/write_fits_json.h"
 #include "common/segment/segment_by_primitive_growing.h"
-#include "common/snap/snap_segments.h"
 
 #include <algorithm>
 #include <chrono>
@@ -42,22 +40,6 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-void write_fits(const std::string& path, const std::vector<primitive_edit::AutoFitResult>& fits)
-{
-  std::ofstream out(path);
-  out << "{\"segments\": [\n";
-  bool first = true;
-  for (std::size_t s = 0; s < fits.size(); ++s) {
-    if (!fits[s].ok)
-      continue;
-    const primitive_edit::Primitive& p = fits[s].best.primitive;
-    out << (first ? "" : ",\n") << "  {\"id\": " << s << ", \"type\": \"" << primitive_edit::primitive_type_name(p.type)
-        << "\", \"rms\": " << fits[s].best.rms << ", \"parameters\": {\"radius\": " << p.radius << "}}";
-    first = false;
-  }
-  out << "\n]}\n";
 }
 
 // Reads the segment of each face from the face quality of `path`, a PLY of the same scan (same face
@@ -132,7 +114,9 @@ int main(int argc, char** argv)
 {
   std::string scan_path, labels_path, types_path, segmented_path, fits_path, snapped_path;
   int runs = 3;
-  primitive_edit::AutoFitOptions fit_options;
+  double fit_tolerance = 0;
+  bool relations = true;
+  primitive_edit::RelationOptions relation_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -146,7 +130,13 @@ int main(int argc, char** argv)
     else if (a == "--smoothing" && has_value)
       params.smoothing_iterations = std::atoi(argv[++i]);
     else if (a == "--fit-tolerance" && has_value)
-      fit_options.tolerance = std::atof(argv[++i]);
+      fit_tolerance = std::atof(argv[++i]);
+    else if (a == "--relations" && has_value)
+      relations = std::atoi(argv[++i]) != 0;
+    else if (a == "--relation-angle" && has_value)
+      relation_options.angle_deg = std::atof(argv[++i]);
+    else if (a == "--relation-cost" && has_value)
+      relation_options.max_cost_increase = std::atof(argv[++i]);
     else if (a == "--labels" && has_value)
       labels_path = argv[++i];
     else if (a == "--types" && has_value)
@@ -164,9 +154,9 @@ int main(int argc, char** argv)
       break;
     }
   }
-  if (scan_path.empty() || !std::isfinite(fit_options.tolerance) || fit_options.tolerance < 0) {
+  if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
+                         "[--relations 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -218,36 +208,35 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
     return 1;
   }
-  auto t0 = std::chrono::steady_clock::now();
-  if (fit_options.tolerance == 0)
-    fit_options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
-  const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, K);
-  std::vector<AutoFitResult> fits(samples.size());
-  std::vector<std::optional<Primitive>> primitives(samples.size());
-  int fitted = 0;
-  for (std::size_t s = 0; s < samples.size(); ++s) {
-    if (forced_type[s]) {
-      fits[s].best = fit_primitive(*forced_type[s], samples[s].points, samples[s].normals, samples[s].weights,
-                                   fit_options.fit);
-      fits[s].ok = fits[s].best.ok;
-    } else {
-      fits[s] = fit_primitive_auto(samples[s].points, samples[s].normals, samples[s].weights, fit_options);
-    }
-    if (fits[s].ok) {
-      primitives[s] = fits[s].best.primitive;
-      ++fitted;
-    }
+  FitAllSegmentsOptions fit_all;
+  fit_all.tolerance = fit_tolerance;
+  fit_all.types = forced_type;
+  fit_all.relations = relations;
+  fit_all.relation_options = relation_options;
+  fit_all.snap = true;
+  const FitAllSegmentsResult result = fit_all_segments(m, segment_of_face, fit_all);
+  if (!result.status) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", result.status.error.c_str());
+    return 1;
   }
-  const double fit_time = seconds_since(t0);
-  t0 = std::chrono::steady_clock::now();
-  const SnapReport snap = snap_segments(m, segment_of_face, primitives);
-  const double snap_time = seconds_since(t0);
+  const SnapReport& snap = *result.snap;
+  if (relations) {
+    std::printf("relations: %zu kept, %d dropped by the check, %.3f s:", result.relations.size(), result.relations_dropped,
+                result.relation_seconds);
+    for (const Relation& r : result.relations)
+      std::printf(" %s(%d,%d)", relation_kind_name(r.kind), r.a, r.b);
+    std::printf("\n");
+  }
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner, "
               "%d reverted)\n",
-              fit_time, fitted, K, snap_time, snap.moved_vertices, snap.edge_vertices, snap.corner_vertices,
-              snap.reverted_vertices);
-  if (!fits_path.empty())
-    write_fits(fits_path, fits);
+              result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
+              snap.corner_vertices, snap.reverted_vertices);
+  if (!fits_path.empty()) {
+    std::ofstream out(fits_path);
+    write_fits_json(out, result, scan_path, true);
+    if (!out)
+      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", fits_path.c_str());
+  }
   if (!snapped_path.empty() && !bracket::save_ply(m, snapped_path, false))
     std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", snapped_path.c_str());
   return 0;

@@ -4,7 +4,7 @@
 Per scan, one meshlabserver run (reference loaded first: layer 0 = reference, layer 1 = scan):
   Measure: Accuracy Against Reference   the input accuracy (the paper's measure, section 3)
   <segmentation filter>                 default: the best one this meshlabserver has
-  Primitive: Fit All Segments           Snap, SharpEdges, Export JSON
+  Primitive: Fit All Segments           Relations, Snap, SharpEdges, Export JSON
   Measure: Accuracy Against Reference   the output accuracy
 then the segmented, snapped scan (saved with its face quality = segment id) is scored against the
 scan's ground truth with bench/score_segmentation.py. Printed (and written as markdown with --report):
@@ -188,7 +188,10 @@ def run_scan(args, label, scan, truth, segmentation):
                param("Seed", 1, "RichInt"), param("DeviationMap", False, "RichBool")]
     seg_name, seg_params, _ = segmentation
     filters = [(MEASURE, measure), (seg_name, seg_params),
-               (FIT_ALL, [param("Tolerance", args.fit_tolerance, "RichFloat"), param("Snap", True, "RichBool"),
+               (FIT_ALL, [param("Tolerance", args.fit_tolerance, "RichFloat"),
+                          param("Relations", bool(args.relations), "RichBool"),
+                          param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                          param("Snap", True, "RichBool"),
                           param("Export", fit_json, "RichString"), param("SharpEdges", True, "RichBool")]),
                (MEASURE, measure)]
     script = os.path.join(work, "pipeline.mlx")
@@ -266,6 +269,9 @@ def main():
                    help="Fit All Segments' RMS limit in mm (0: automatic, the larger of 1%% of each segment's size "
                    "and 3x the scan's roughness)")
     p.add_argument("--segment", help="segmentation filter (default: the best available: %s)" % " or ".join(PREFERRED))
+    p.add_argument("--relations", type=int, choices=(0, 1), default=1,
+                   help="Fit All Segments' Relations: 1 (default) refits the primitives together under the "
+                        "relations found, 0 fits each segment alone")
     p.add_argument("--segment-param", action="append", default=[], metavar="NAME=VALUE",
                    help="a parameter of the segmentation filter (repeatable); Name:RichType=Value for a "
                    "filter whose parameters the driver does not know")

@@ -1,32 +1,25 @@
 #include "filter_primitive_fit.h"
 
 #include "common/base/constants.h"
-#include "common/mesh/count_segments.h"
 #include "common/base/describe_primitive.h"
+#include "common/mesh/check_mesh_input.h"
+#include "common/mesh/count_segments.h"
 #include "common/mesh/estimate_surface_roughness.h"
 #include "common/mesh/face_adjacency.h"
-#include "common/fit/fit_primitive.h"
-#include "common/fit/fit_primitive_auto.h"
-#include "common/pipeline/fit_segments_auto.h"
 #include "common/mesh/gather_segment_samples.h"
-#include "common/mesh/mesh_input_problem.h"
-#include "common/fit/minimum_points_for.h"
 #include "common/mesh/segment_attribute.h"
-#include "common/mesh/segment_primitive_attribute.h"
-#include "common/snap/snap_segments.h"
+#include "common/pipeline/fit_all_segments.h"
+#include "common/pipeline/fit_segment.h"
+#include "common/pipeline/snap_onto_primitive.h"
+#include "common/pipeline/write_fits_json.h"
+#include "common/relate/describe_relation.h"
+#include "meshlab_api/load_segments.h"
 
-#include <vcg/complex/algorithms/update/bounding.h>
-#include <vcg/complex/algorithms/update/normal.h>
-
-#include <QElapsedTimer>
 #include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
-#include <algorithm>
-#include <numeric>
 #include <cmath>
+#include <fstream>
+#include <optional>
 
 using namespace primitive_edit;
 using namespace primitive_edit::meshlab;
@@ -36,25 +29,6 @@ namespace {
 // Type parameter: index 0 is Auto, then PrimitiveType in order.
 const QStringList kTypeNames = {"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"};
 
-QJsonArray json_vector(const Eigen::Vector3d& v) { return QJsonArray{v.x(), v.y(), v.z()}; }
-
-QJsonObject json_parameters(const Primitive& p)
-{
-  switch (p.type) {
-  case PrimitiveType::Plane:
-    return {{"normal", json_vector(p.axis)}, {"offset", p.axis.dot(p.origin)}, {"point", json_vector(p.origin)}};
-  case PrimitiveType::Sphere: return {{"center", json_vector(p.origin)}, {"radius", p.radius}};
-  case PrimitiveType::Cylinder:
-    return {{"axis_point", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"radius", p.radius}};
-  case PrimitiveType::Cone:
-    return {{"apex", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"half_angle_deg", degrees_from_radians(p.half_angle)}};
-  case PrimitiveType::Torus:
-    return {{"center", json_vector(p.origin)}, {"axis", json_vector(p.axis)}, {"major_radius", p.radius},
-            {"minor_radius", p.minor_radius}};
-  }
-  return {};
-}
-
 QString primitive_filter_name(int filter)
 {
   switch (filter) {
@@ -63,14 +37,6 @@ QString primitive_filter_name(int filter)
   case PrimitiveFitFilters::PRIMITIVE_FIT_ALL_SEGMENTS: return "Primitive: Fit All Segments";
   }
   return "";
-}
-
-void update_geometry(MeshModel& mm)
-{
-  // PerVertexNormalizedPerFace recomputes face normals unnormalised: normalise them after it.
-  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(mm.cm);
-  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm.cm);
-  vcg::tri::UpdateBounding<CMeshO>::Box(mm.cm);
 }
 
 QString snap_summary(const SnapReport& r)
@@ -105,9 +71,11 @@ std::vector<FilterDefinition> PrimitiveFitFilters::filters() const
     d.postconditions = post;
     return d;
   };
-  const int moved = MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
+  // Stored ids that are not dense are renumbered and written back (load_segments.h): quality and colours.
+  const int ids = MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
+  const int moved = ids | MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
   return {
-    def(PRIMITIVE_FIT_SEGMENT, "primitive_fit_segment", MenuMeasure, MeshModel::MM_NONE,
+    def(PRIMITIVE_FIT_SEGMENT, "primitive_fit_segment", MenuMeasure, ids,
         "Fits a primitive (plane, sphere, cylinder, cone or torus; Auto picks the type) to a segment and "
            "logs its parameters (radius, axis, centre, half-angle...) with the RMS and maximum residual. Moves "
         "nothing." + method),
@@ -149,6 +117,19 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                               "Largest RMS residual, in mesh units, for a segment to count as a primitive; "
                               "0 uses the larger of 1% of each segment's size and 3 times the scan's "
                               "roughness (the RMS of the surface about local planes, estimated here).");
+    parlst.addBool("Relations", true, "Relations",
+                             "Find the relations a machined part's primitives share (parallel, perpendicular "
+                             "and 45 degree faces, coaxial and concentric features, coplanar faces, equal radii, "
+                             "fillets tangent to the faces they round) and refit all primitives together under "
+                             "them. A relation is kept only if it raises no segment's fit error by more than "
+                             "10%; tilted or free features stay as fitted.");
+    parlst.addFloat("RelationAngle", 10, "Relation Angle (degrees)",
+                              "Directions within this angle of parallel, perpendicular or 45 degrees are "
+                              "tested as related (between 0 and 90).");
+    parlst.addFloat("RelationDistance", 0, "Relation Distance",
+                              "Axes, centres and planes within this distance, in mesh units, are tested as "
+                              "coaxial, concentric or coplanar, radii within it as equal; 0 uses 3 times the "
+                              "scan's roughness.");
     parlst.addBool("Snap", true, "Snap Segments",
                              "Move every fitted segment onto its primitive.");
     parlst.addString("Export", "", "Export JSON",
@@ -163,9 +144,8 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
 Status PrimitiveFitFilters::apply(int id, FilterRun& run)
 {
   MeshModel& mm = run.mesh;
-  const std::string problem = mesh_input_problem(mm.cm);
-  if (!problem.empty())
-    return fail(primitive_filter_name(id) + ": " + QString::fromStdString(problem) + ".");
+  if (const Status usable = check_mesh_input(mm.cm); !usable)
+    return fail(primitive_filter_name(id), usable);
   switch (id) {
   case PRIMITIVE_FIT_SEGMENT: return fitOrSnapSegment(mm, run.arguments, false, run);
   case PRIMITIVE_SNAP_SEGMENT: return fitOrSnapSegment(mm, run.arguments, true, run);
@@ -183,11 +163,10 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   if (type_index < 0 || type_index > kPrimitiveTypeCount)
     return fail(name + QString(": Type %1 does not exist.").arg(type_index));
 
-  std::vector<int> segment_of_face;
-  const bool segmented = read_segment_ids(m, segment_of_face);
+  const LoadedSegments loaded = read_segments(mm);
+  const bool segmented = loaded.found;
+  std::vector<int> segment_of_face = loaded.segment_of_face;
   const int count = segmented ? count_segments(segment_of_face) : 0;
-  if (!segmented)
-    segment_of_face.assign(m.face.size(), -1);
   // The faces to fit carry label `target`: an existing segment, or a new id for the selected faces.
   std::vector<int> labels = segment_of_face;
   int target = segment;
@@ -210,31 +189,21 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   const QString what = segment == -1 ? QString("the selected faces") : QString("segment %1").arg(segment);
 
   const SegmentSamples samples = std::move(gather_segment_samples(m, labels, target + 1)[size_t(target)]);
-  FitResult fit;
-  if (type_index == 0) {
-    // As in Fit All: a segment of a rough scan is a primitive within the scan's roughness.
-    AutoFitOptions options;
+  AutoFitOptions options;
+  if (type_index == 0)  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
     options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
-    const AutoFitResult automatic = fit_primitive_auto(samples.points, samples.normals, samples.weights, options);
-    if (!automatic.ok)
-      return fail(name + ": " + what + (segment == -1 ? " fit" : " fits") + " no primitive: " +
-                  QString::fromStdString(automatic.message));
-    fit = automatic.best;
-  } else {
-    const PrimitiveType type = PrimitiveType(type_index - 1);
-    if (samples.points.rows() < minimum_points_for(type))
-      return fail(name + QString(": %1 has %2 points; a %3 needs at least %4.")
-                             .arg(what).arg(samples.points.rows()).arg(primitive_type_name(type))
-                             .arg(minimum_points_for(type)));
-    fit = fit_primitive(type, samples.points, samples.normals, samples.weights);
-    if (!fit.ok)
-      return fail(name + ": " + what + " cannot be fitted: " + QString::fromStdString(fit.message));
-  }
+  const std::optional<PrimitiveType> type =
+      type_index == 0 ? std::nullopt : std::optional<PrimitiveType>(PrimitiveType(type_index - 1));
+  const FitResult fit = fit_segment(samples, type, options);
+  if (!fit.status.ok())
+    return fail(name + ": " + what + (type ? " cannot be fitted" : " fits no primitive"), fit.status);
   run.logf("%s: %s (%d points, area %.6g): %s; RMS %.4g, max residual %.4g.", qUtf8Printable(name),
       qUtf8Printable(what), fit.point_count, samples.area, describe_primitive(fit.primitive).c_str(), fit.rms,
       fit.max_residual);
-  if (!snap)
+  if (!snap) {
+    keep_segment_ids(run, name, loaded);
     return Status::success();
+  }
 
   Primitive edited = fit.primitive;
   const double radius = parlst.getFloat("Radius"), angle = parlst.getFloat("Angle");
@@ -256,19 +225,10 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   if (!primitive_is_valid(edited))
     return fail(name + ": the edited primitive is not valid: " + QString::fromStdString(describe_primitive(edited)));
 
-  SnapOptions options;
-  options.sharp_edges = parlst.getBool("SharpEdges");
-  SegmentPrimitives recorded = read_segment_primitives(m, count);
-  SegmentPrimitives primitives(size_t(std::max(count, target + 1)));
-  if (options.sharp_edges)
-    std::copy(recorded.begin(), recorded.end(), primitives.begin());
-  primitives[size_t(target)] = edited;
-  const SnapReport report = snap_segments(m, labels, primitives, options);
-  if (segment >= 0) {
-    recorded[size_t(segment)] = edited;
-    write_segment_primitives(m, recorded);
-  }
-  update_geometry(mm);
+  SnapOptions snap_options;
+  snap_options.sharp_edges = parlst.getBool("SharpEdges");
+  keep_segment_ids(run, name, loaded);
+  const SnapReport report = snap_onto_primitive(m, labels, {target}, edited, snap_options, count);
   run.logf("%s: %s snapped onto %s; %s.", qUtf8Printable(name), qUtf8Printable(what),
       describe_primitive(edited).c_str(), qUtf8Printable(snap_summary(report)));
   return Status::success();
@@ -276,97 +236,83 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
 
 Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parlst, Run& run)
 {
-  const Progress& progress = run.progress;
   const QString name = "Primitive: Fit All Segments";
-  CMeshO& m = mm.cm;
-  const double tolerance = parlst.getFloat("Tolerance");
-  const bool snap = parlst.getBool("Snap");
+  FitAllSegmentsOptions options;
+  options.tolerance = parlst.getFloat("Tolerance");
+  options.relations = parlst.getBool("Relations");
+  options.relation_options.angle_deg = parlst.getFloat("RelationAngle");
+  options.relation_options.distance = parlst.getFloat("RelationDistance");
+  options.snap = parlst.getBool("Snap");
+  options.snap_options.sharp_edges = parlst.getBool("SharpEdges");
   const QString path = parlst.getString("Export").trimmed();
-  if (!std::isfinite(tolerance) || tolerance < 0)
-    return fail(name + QString(": Fit Tolerance must be 0 (automatic) or positive, not %1.").arg(tolerance));
-  std::vector<int> segment_of_face;
-  if (!read_segment_ids(m, segment_of_face))
-    return fail(name + ": the mesh has no segments; run Segment: Auto by Normal Angle first.");
-  QFile file(path);
-  if (!path.isEmpty() && !file.open(QIODevice::WriteOnly | QIODevice::Truncate))
-    return fail(name + ": cannot write the export file " + path + ": " + file.errorString());
+  if (!std::isfinite(options.tolerance) || options.tolerance < 0)
+    return fail(name + QString(": Fit Tolerance must be 0 (automatic) or positive, not %1.").arg(options.tolerance));
+  const double angle = options.relation_options.angle_deg, distance = options.relation_options.distance;
+  if (!(angle > 0 && angle < 90))
+    return fail(name + QString(": Relation Angle must be between 0 and 90 degrees, not %1.").arg(angle));
+  if (!std::isfinite(distance) || distance < 0)
+    return fail(name + QString(": Relation Distance must be 0 (automatic) or positive, not %1.").arg(distance));
+  const LoadedSegments loaded = read_segments(mm);
+  if (!loaded.found)
+    return fail(name + ": the mesh has no segments; run Segment: Auto by Primitive Fit first.");
+  const std::vector<int>& segment_of_face = loaded.segment_of_face;
+  std::ofstream file;
+  if (!path.isEmpty()) {
+    file.open(QFile::encodeName(path).toStdString(), std::ios::out | std::ios::trunc);
+    if (!file)
+      return fail(name + ": cannot write the export file " + path + ".");
+  }
 
-  QElapsedTimer timer;
-  timer.start();
-  const int count = count_segments(segment_of_face);
-  const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
-  AutoFitOptions options;
-  options.tolerance = tolerance;
-  if (tolerance == 0) {
-    options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
+  const FitAllSegmentsResult r = fit_all_segments(mm.cm, segment_of_face, options, run.progress);
+  if (!r.status.ok())
+    return fail(name, r.status);
+  keep_segment_ids(run, name, loaded);
+  if (options.tolerance == 0)
     run.logf("%s: estimated surface roughness %.4g (RMS about local planes): segments within %.4g RMS of a primitive "
         "(or 1%% of their size) are fitted.",
-        qUtf8Printable(name), options.roughness, 3 * options.roughness);
-  }
-  const std::vector<AutoFitResult> fits =
-      fit_segments_auto(samples, options, 0, progress_range(progress, 0, snap ? 80 : 100));
-  SegmentPrimitives primitives(static_cast<size_t>(count));
-  int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
-  double fitted_area = 0, total_area = 0;
-  for (int s = 0; s < count; ++s) {
-    total_area += samples[size_t(s)].area;
-    const AutoFitResult& fit = fits[size_t(s)];
-    if (fit.ok) {
-      primitives[size_t(s)] = fit.best.primitive;
-      ++per_type[int(fit.best.primitive.type)];
-      fitted_area += samples[size_t(s)].area;
-    }
-  }
-  const qint64 fit_ms = timer.elapsed();
-
-  if (!path.isEmpty()) {
-    QJsonArray segments;
-    for (int s = 0; s < count; ++s) {
-      const AutoFitResult& fit = fits[size_t(s)];
-      QJsonObject o{{"id", s}, {"point_count", int(samples[size_t(s)].points.rows())},
-                    {"area", samples[size_t(s)].area}};
-      if (fit.ok) {
-        o["type"] = primitive_type_name(fit.best.primitive.type);
-        o["parameters"] = json_parameters(fit.best.primitive);
-        o["rms"] = fit.best.rms;
-        o["max_residual"] = fit.best.max_residual;
-      } else {
-        o["type"] = "FreeForm";
-        o["reason"] = QString::fromStdString(fit.message);
-      }
-      segments.append(o);
-    }
-    const QJsonObject doc{{"mesh", mm.label()}, {"segment_count", count}, {"snapped", snap}, {"segments", segments}};
-    file.write(QJsonDocument(doc).toJson());
-    file.close();
-  }
-
-  for (int s = 0; s < count && s < 100; ++s) {
-    const AutoFitResult& fit = fits[size_t(s)];
-    if (fit.ok)
-      run.logf("  segment %d: %s; RMS %.4g, %d points", s, describe_primitive(fit.best.primitive).c_str(), fit.best.rms,
-          fit.best.point_count);
+        qUtf8Printable(name), r.roughness, 3 * r.roughness);
+  for (int s = 0; s < r.segment_count() && s < 100; ++s) {
+    const FitResult& fit = r.fits[size_t(s)];
+    if (fit.status.ok())
+      run.logf("  segment %d: %s; RMS %.4g, %d points", s, describe_primitive(fit.primitive).c_str(), fit.rms,
+          fit.point_count);
     else
-      run.logf("  segment %d: free-form (%s)", s, fit.message.c_str());
+      run.logf("  segment %d: free-form (%s)", s, fit.status.error.c_str());
   }
-  const int fitted = std::accumulate(per_type, per_type + kPrimitiveTypeCount, 0);
   run.logf("%s: %d of %d segments fitted (%.1f%% of the area): %d planes, %d spheres, %d cylinders, %d cones, %d tori; "
-      "%d free-form. Fitting took %lld ms.",
-      qUtf8Printable(name), fitted, count, total_area > 0 ? 100.0 * fitted_area / total_area : 0.0, per_type[0],
-      per_type[1], per_type[2], per_type[3], per_type[4], count - fitted, fit_ms);
-  if (!path.isEmpty())
+      "%d free-form. Fitting took %.0f ms.",
+      qUtf8Printable(name), r.fitted, r.segment_count(), r.total_area > 0 ? 100.0 * r.fitted_area / r.total_area : 0.0,
+      r.per_type[0], r.per_type[1], r.per_type[2], r.per_type[3], r.per_type[4], r.segment_count() - r.fitted,
+      1000 * r.fit_seconds);
+  if (options.relations)
+    logRelations(name, r, run);
+  if (!path.isEmpty()) {
+    write_fits_json(file, r, mm.label().toStdString(), options.snap);
+    file.close();
+    if (!file)
+      return fail(name + ": writing the export file " + path + " failed.");
     run.logf("%s: primitives exported to %s.", qUtf8Printable(name), qUtf8Printable(path));
-  if (!snap)
-    return Status::success();
-
-  report_progress(progress, 85, "Snapping segments");
-  timer.restart();
-  SnapOptions snap_options;
-  snap_options.sharp_edges = parlst.getBool("SharpEdges");
-  const SnapReport report = snap_segments(m, segment_of_face, primitives, snap_options);
-  write_segment_primitives(m, primitives);
-  update_geometry(mm);
-  run.logf("%s: %d segments snapped; %s. Snapping took %lld ms.", qUtf8Printable(name), fitted,
-      qUtf8Printable(snap_summary(report)), timer.elapsed());
+  }
+  if (r.snap) {
+      run.logf("%s: %d segments snapped; %s. Snapping took %.0f ms.", qUtf8Printable(name), r.fitted,
+        qUtf8Printable(snap_summary(*r.snap)), 1000 * r.snap_seconds);
+  }
   return Status::success();
+}
+
+void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegmentsResult& r, Run& run)
+{
+  int per_kind[kRelationKindCount] = {};
+  for (const Relation& relation : r.relations)
+    ++per_kind[int(relation.kind)];
+  QString counts;
+  for (int k = 0; k < kRelationKindCount; ++k)
+    if (per_kind[k] > 0)
+      counts += QString("%1%2 %3").arg(counts.isEmpty() ? ": " : ", ").arg(per_kind[k]).arg(
+          relation_kind_name(RelationKind(k)));
+  run.logf("%s: %d relations kept%s (%d found but dropped: they raised a segment's fit error too much). "
+      "Refitting under them took %.0f ms.", qUtf8Printable(name), int(r.relations.size()), qUtf8Printable(counts),
+      r.relations_dropped, 1000 * r.relation_seconds);
+  for (std::size_t i = 0; i < r.relations.size() && i < 100; ++i)
+    run.logf("  relation: %s", describe_relation(r.relations[i], r.primitives).c_str());
 }

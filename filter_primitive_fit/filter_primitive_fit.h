@@ -10,6 +10,10 @@
 #include "meshlab_api/filter_suite.h"
 #include "plugin_api/mesh_document.h"
 
+namespace primitive_edit {
+struct FitAllSegmentsResult;
+}
+
 class PrimitiveFitFilters : public primitive_edit::meshlab::FilterSuite
 {
 public:
@@ -27,6 +31,7 @@ private:
 
   Status fitOrSnapSegment(MeshModel& mm, const Arguments& parlst, bool snap, Run& run);
   Status fitAllSegments(MeshModel& mm, const Arguments& parlst, Run& run);
+  static void logRelations(const QString& name, const primitive_edit::FitAllSegmentsResult& r, Run& run);
 };
 
 #endif

@@ -9,9 +9,9 @@ import re
 import sys
 
 # Lowest first. A room knows only the rooms before it in this list.
-ROOMS = ["base", "geometry", "mesh", "fit", "segment", "snap", "measure", "pipeline"]
-# segment, snap and measure are siblings: none of them may include another.
-SIBLINGS = {"segment", "snap", "measure"}
+ROOMS = ["base", "geometry", "mesh", "fit", "relate", "segment", "snap", "measure", "pipeline"]
+# relate, segment, snap and measure are siblings: none of them may include another.
+SIBLINGS = {"relate", "segment", "snap", "measure"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
 

@@ -48,7 +48,9 @@ FILTERS = [
                                  param("Radius", 0, "RichFloat"), param("Angle", 0, "RichFloat"),
                                  param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
                                  param("SharpEdges", True, "RichBool")], True),
-    ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Snap", True, "RichBool"),
+    ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
+                                     param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                                     param("Snap", True, "RichBool"),
                                      param("Export", "", "RichString"), param("SharpEdges", True, "RichBool")],
      True),
     # The malformed mesh measured against the clean reference, then as the reference.

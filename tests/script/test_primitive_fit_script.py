@@ -62,7 +62,9 @@ def main():
     write_mlx(script, [
         ("Segment: Auto by Normal Angle", [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 2, "RichInt"),
                                            param("MinSegmentFaces", 30, "RichInt")]),
-        ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Snap", True, "RichBool"),
+        ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
+                                     param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                                     param("Snap", True, "RichBool"),
                                          param("Export", export, "RichString"),
                                          param("SharpEdges", True, "RichBool")]),
     ])
@@ -87,6 +89,20 @@ def main():
         c.check(abs(abs(p["axis"][2]) - 1) < 1e-3, "cylinder axis along z")
         c.check(abs(cyl[0]["area"] - 2 * math.pi * RADIUS * HEIGHT) / (2 * math.pi * RADIUS * HEIGHT) < 0.01,
                 "cylinder area matches")
+    # Relations: the caps' normals and the cylinder's axis are one class of parallel directions.
+    relations = doc.get("relations", [])
+    group = {s["id"]: s["id"] for s in segs}
+    def root(i):
+        while group[i] != i:
+            i = group[i]
+        return i
+    for r in relations:
+        if r["kind"] == "parallel":
+            group[root(r["segments"][0])] = root(r["segments"][1])
+    c.check(len(segs) == 3 and len({root(s["id"]) for s in segs}) == 1,
+            "JSON relates caps and axis as parallel (relations %s)" % relations)
+    c.check(all(set(r) == {"kind", "segments", "value"} for r in relations), "each relation has kind, segments, value")
+    c.check("relations kept" in log and "relation: parallel: segments" in log, "the log lists the relations")
     planes = sorted(abs(s["parameters"]["offset"]) for s in segs if s["type"] == "Plane")
     c.check(len(planes) == 2 and planes[0] < 1e-3 and abs(planes[1] - HEIGHT) < 1e-3, "cap planes at z = 0 and 10")
 
@@ -123,6 +139,28 @@ def main():
             1, len(cyl_vertices))
         c.check(len(cyl_vertices) > 0 and mean < 1e-4, "cylinder vertices at radius 5 (mean error %.2g)" % mean)
         c.check(sorted(set(ids)) == [0, 1, 2], "segment ids survive the round trip")
+
+    # Segment ids are the ones the user reads in the face quality: dense ids in another order are kept, and
+    # sparse ones are renumbered in their order and written back.
+    if os.path.exists(out2):
+        for label, remap in [("dense ids in another order", {0: 2, 1: 0, 2: 1}),
+                             ("sparse ids", {0: 25, 1: 5, 2: 15})]:
+            labelled = os.path.join(args.workdir, "labelled.ply")
+            write_ply(labelled, v2, f2, [remap[s] for s in ids])
+            dense = sorted(remap.values())
+            expected = dense.index(remap[cid])  # the cylinder's id as the filters number it
+            script3 = os.path.join(args.workdir, "fit_labelled.mlx")
+            write_mlx(script3, [("Primitive: Fit Segment", [param("Segment", expected, "RichInt"), type_param(0)])])
+            out4 = os.path.join(args.workdir, "labelled_out.ply")
+            code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [labelled], script3, out4, "fq")
+            c.check(code == 0 and "segment %d (" % expected in log and "Cylinder" in log,
+                    "%s: Fit Segment %d fits the faces whose quality says %d (the cylinder)" % (
+                        label, expected, remap[cid]))
+            if os.path.exists(out4):
+                saved = [int(round(q)) for q in read_ply(out4)[2]["quality"]]
+                want = [dense.index(remap[s]) for s in ids]
+                c.check(saved == want, "%s: the face quality saved holds the ids the filter used" % label)
+            c.check(("renumbered" in log) == (label == "sparse ids"), "%s: the log says when ids were renumbered" % label)
 
     # Bad input: the filter refuses with a clear message and the saved mesh equals the input.
     for label, filters, expect in [

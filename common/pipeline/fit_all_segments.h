@@ -1,0 +1,158 @@
+// fit_all_segments.h: "Primitive: Fit All Segments": a primitive for every segment of a mesh and, if asked,
+// every segment snapped onto its primitive. The filter, the benches and the fuzz target all run this.
+//
+// Input:  a vcg triangle mesh, its segment ids (index = vcg::tri::Index(m, face), -1 = none) and
+//         FitAllSegmentsOptions: the RMS tolerance (0: automatic from the scan's roughness, see
+//         fit_primitive_auto.h), optional types per segment (fitted as given instead of the automatic type),
+//         whether to snap and how (SnapOptions), the threads (fit_segments.h), and a Progress.
+// Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
+//         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
+//         where free-form); the relations kept (with relations on) and how many the check dropped; the estimated
+//         roughness, counts per type, the fitted share of the area, the SnapReport and the time of each stage. With snap, the mesh's vertices
+//         lie on the primitives, the primitives are recorded on the mesh (segment_primitive_attribute.h) so
+//         that a later Snap Segment keeps sharp edges against them, and normals and bounding box are updated.
+//         A failed status, with the mesh untouched, when there are no segments or the tolerance is negative
+//         or not finite.
+// Method: estimate_surface_roughness (automatic tolerance or relations), gather_segment_samples, fit_segments
+//         (all threads), relate_primitives (segment_contacts for the tangencies), snap_segments.
+// Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
+#ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
+#define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
+
+#include "common/base/progress.h"
+#include "common/base/status.h"
+#include "common/mesh/count_segments.h"
+#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/mesh/segment_primitive_attribute.h"
+#include "common/mesh/update_normals_and_bounds.h"
+#include "common/mesh/segment_contacts.h"
+#include "common/pipeline/fit_segments.h"
+#include "common/relate/relate_primitives.h"
+#include "common/snap/snap_segments.h"
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace primitive_edit {
+
+struct FitAllSegmentsOptions
+{
+  double tolerance = 0;  // RMS limit of a fit; 0: automatic (3 x the scan's roughness, or 1% of the segment's size)
+  std::vector<std::optional<PrimitiveType>> types;  // per segment, optional: fit this type (the benches' ceilings)
+  FitOptions fit;
+  bool relations = true;  // find parallel, perpendicular, coaxial... primitives and refit them together
+  RelationOptions relation_options;
+  bool snap = false;
+  SnapOptions snap_options;
+  int threads = 0;  // <= 0: all hardware threads
+};
+
+struct FitAllSegmentsResult
+{
+  Status status;
+  std::vector<FitResult> fits;  // per segment
+  std::vector<int> point_count;
+  std::vector<double> area;
+  SegmentPrimitives primitives;  // per segment; empty where free-form
+  double roughness = 0;          // estimated when the tolerance is automatic, else 0
+  int fitted = 0;
+  int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
+  double fitted_area = 0, total_area = 0;
+  std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids
+  int relations_dropped = 0;        // found, then dropped by the check after the refit
+  std::optional<SnapReport> snap;
+  double fit_seconds = 0, relation_seconds = 0, snap_seconds = 0;  // roughness, samples and fits; relations; snapping
+
+  int segment_count() const { return int(fits.size()); }
+};
+
+template <class MeshType>
+FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segment_of_face,
+                                      const FitAllSegmentsOptions& options, const Progress& progress = {})
+{
+  using Clock = std::chrono::steady_clock;
+  FitAllSegmentsResult out;
+  if (!std::isfinite(options.tolerance) || options.tolerance < 0) {
+    out.status = Status::failure("the fit tolerance must be 0 (automatic) or positive");
+    return out;
+  }
+  const int count = count_segments(segment_of_face);
+  if (count == 0 || segment_of_face.size() != m.face.size()) {
+    out.status = Status::failure("the mesh has no segments");
+    return out;
+  }
+
+  auto t0 = Clock::now();
+  AutoFitOptions fit_options;
+  fit_options.tolerance = options.tolerance;
+  fit_options.fit = options.fit;
+  FaceAdjacency adjacency;
+  if (options.tolerance == 0 || options.relations) {
+    adjacency = build_face_adjacency(m);
+    out.roughness = estimate_surface_roughness(m, adjacency);
+  }
+  if (options.tolerance == 0)
+    fit_options.roughness = out.roughness;
+  const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
+  out.fits = fit_segments(samples, options.types, fit_options, options.threads,
+                          progress_range(progress, 0, options.snap ? 80 : 100));
+  out.primitives.resize(size_t(count));
+  for (int s = 0; s < count; ++s) {
+    const SegmentSamples& seg = samples[size_t(s)];
+    out.point_count.push_back(int(seg.points.rows()));
+    out.area.push_back(seg.area);
+    out.total_area += seg.area;
+    const FitResult& fit = out.fits[size_t(s)];
+    if (fit.status.ok()) {
+      out.primitives[size_t(s)] = fit.primitive;
+      ++out.per_type[int(fit.primitive.type)];
+      ++out.fitted;
+      out.fitted_area += seg.area;
+    }
+  }
+  out.fit_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  if (options.relations && out.fitted >= 2) {
+    t0 = Clock::now();
+    report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
+    const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face, adjacency),
+                                                        out.roughness, options.relation_options);
+    out.relations = related.relations;
+    out.relations_dropped = related.dropped;
+    for (int s = 0; s < count; ++s) {
+      const std::optional<Primitive>& p = related.primitives[std::size_t(s)];
+      if (!p || !out.fits[std::size_t(s)].status.ok())
+        continue;
+      // RMS and maximum residual as the fit reports them: over the inliers of the robust weights.
+      const SegmentSamples& seg = samples[std::size_t(s)];
+      const double floor = 1e-9 * std::max(seg.points.rows() ? (seg.points.colwise().maxCoeff() - seg.points.colwise().minCoeff()).norm() : 0.0, 1e-300);
+      Eigen::VectorXd used = refine_detail::tukey_weights(*p, seg.points, seg.weights, 1.0, floor);
+      for (Eigen::Index i = 0; i < used.size(); ++i)
+        used[i] = used[i] > 0 ? seg.weights[i] : 0.0;
+      FitResult refit = fit_residuals(*p, seg.points, used);
+      if (refit.status.ok()) {
+        out.fits[std::size_t(s)] = refit;
+        out.primitives[std::size_t(s)] = p;
+      }
+    }
+    out.relation_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  if (!options.snap)
+    return out;
+
+  report_progress(progress, 85, "Snapping segments");
+  t0 = Clock::now();
+  out.snap = snap_segments(m, segment_of_face, out.primitives, options.snap_options);
+  write_segment_primitives(m, out.primitives);
+  update_normals_and_bounds(m);
+  out.snap_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif

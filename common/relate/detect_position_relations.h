@@ -1,0 +1,197 @@
+// detect_position_relations.h: coaxial and concentric features, coplanar faces, equal radii and fillets
+// tangent to the faces they round, among fitted primitives.
+//
+// Input:  per segment its primitive (nullptr: none) and FitInformation (fit_information.h), the segments'
+//         contacts (segment_contacts.h: only touching segments can be tangent), the largest angle (radians)
+//         and distance (mesh units) a pair may be off a relation, the largest share `max_cost_increase` by
+//         which a relation may raise a segment's fit cost (to first order), and the part's size.
+// Output: the relations found, at most one per pair of segments and kind, without cycles within a kind
+//         (each kind's relations form a forest over the segments, so that no group is tied twice):
+//           Coaxial      two axes (cylinder, cone, torus) within the angle and each origin within the
+//                        distance of the other's axis;
+//           Concentric   sphere centres within the distance; a sphere's centre within it of a cylinder's or
+//                        cone's axis, or of a torus's centre; two coaxial tori whose centres are within it;
+//           Coplanar     two planes within the angle, each origin within the distance of the other plane;
+//           EqualRadius  radii (sphere, cylinder, torus tube) within the distance of each other;
+//           Tangent      a cylinder or torus (the fillet: of two cylinders, the thinner) and a touching
+//                        segment whose surface is within the distance of the fillet's radius from its spine
+//                        (axis, tube centre circle) at their border, with the directions such a contact needs
+//                        (a cylinder along a plane or parallel to a cylinder or cone; a torus coaxial with a
+//                        cylinder, cone or torus, or square to a plane).
+//         Candidates are tried from the closest (deviation over the distance, or angle over the angle), and
+//         kept when relation_cost_increase.h finds that holding them raises neither segment's fit cost by
+//         more than max_cost_increase of it.
+// Cost:   O(K^2) candidate pairs for K segments plus the contacts, one 2-segment test each.
+#ifndef PRIMITIVE_EDIT_DETECT_POSITION_RELATIONS_H
+#define PRIMITIVE_EDIT_DETECT_POSITION_RELATIONS_H
+
+#include "common/mesh/segment_contacts.h"
+#include "common/relate/relation_cost_increase.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+#include <vector>
+
+namespace primitive_edit {
+
+namespace position_detail {
+
+inline double axis_angle(const Primitive& a, const Primitive& b)
+{
+  return std::acos(std::min(1.0, std::abs(a.axis.dot(b.axis))));
+}
+
+// Distance of x from the axis line of p.
+inline double distance_to_axis(const Primitive& p, const Eigen::Vector3d& x)
+{
+  const Eigen::Vector3d v = x - p.origin;
+  return (v - v.dot(p.axis) * p.axis).norm();
+}
+
+inline int find_root(std::vector<int>& parent, int s)
+{
+  while (parent[std::size_t(s)] != s)
+    s = parent[std::size_t(s)] = parent[std::size_t(parent[std::size_t(s)])];
+  return s;
+}
+
+struct Candidate
+{
+  double deviation;  // in units of the tolerance: 0 = exact, 1 = at the limit
+  Relation relation;
+};
+
+} // namespace position_detail
+
+inline std::vector<Relation> detect_position_relations(const std::vector<const Primitive*>& primitives,
+                                                       const std::vector<FitInformation>& info,
+                                                       const std::vector<SegmentContact>& contacts, double max_angle,
+                                                       double max_distance, double max_cost_increase, double length)
+{
+  using namespace position_detail;
+  const int count = int(primitives.size());
+  std::vector<Candidate> candidates;
+  auto add = [&](double deviation, RelationKind kind, int a, int b, double sign = 1,
+                 const Eigen::Vector3d& contact = Eigen::Vector3d::Zero()) {
+    if (!(deviation <= 1.0))
+      return;
+    Relation r;
+    r.kind = kind;
+    r.a = a;
+    r.b = b;
+    r.sign = sign;
+    r.contact = contact;
+    candidates.push_back({deviation, r});
+  };
+  auto prim = [&](int s) -> const Primitive& { return *primitives[std::size_t(s)]; };
+  const double sin_angle = std::sin(max_angle);
+
+  for (int a = 0; a < count; ++a) {
+    if (!primitives[std::size_t(a)])
+      continue;
+    for (int b = a + 1; b < count; ++b) {
+      if (!primitives[std::size_t(b)])
+        continue;
+      const Primitive& pa = prim(a);
+      const Primitive& pb = prim(b);
+      const double ra = relation_radius(pa), rb = relation_radius(pb);
+      if (ra > 0 && rb > 0)
+        add(std::abs(ra - rb) / max_distance, RelationKind::EqualRadius, a, b);
+      if (has_axis(pa) && has_axis(pb)) {
+        const double angle = axis_angle(pa, pb);
+        const double offset = std::max(distance_to_axis(pa, pb.origin), distance_to_axis(pb, pa.origin));
+        const double sign = pa.axis.dot(pb.axis) < 0 ? -1.0 : 1.0;
+        const double deviation = std::max(angle / max_angle, offset / max_distance);
+        const bool tori = pa.type == PrimitiveType::Torus && pb.type == PrimitiveType::Torus;
+        if (tori && std::abs(pa.axis.dot(pb.origin - pa.origin)) <= max_distance)
+          add(std::max(deviation, std::abs(pa.axis.dot(pb.origin - pa.origin)) / max_distance),
+              RelationKind::Concentric, a, b, sign);
+        else
+          add(deviation, RelationKind::Coaxial, a, b, sign);
+      }
+      if (pa.type == PrimitiveType::Plane && pb.type == PrimitiveType::Plane) {
+        const double offset =
+            std::max(std::abs(pa.axis.dot(pb.origin - pa.origin)), std::abs(pb.axis.dot(pa.origin - pb.origin)));
+        add(std::max(axis_angle(pa, pb) / max_angle, offset / max_distance), RelationKind::Coplanar, a, b,
+            pa.axis.dot(pb.axis) < 0 ? -1.0 : 1.0);
+      }
+      // Concentric with a sphere: the sphere is b in the relation (its centre on a's axis or at a's centre).
+      for (const auto& [x, y] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
+        const Primitive& px = prim(x);
+        const Primitive& py = prim(y);
+        if (py.type != PrimitiveType::Sphere || (px.type == PrimitiveType::Sphere && x > y))
+          continue;
+        const bool on_axis = px.type == PrimitiveType::Cylinder || px.type == PrimitiveType::Cone;
+        if (px.type == PrimitiveType::Plane)
+          continue;
+        add((on_axis ? distance_to_axis(px, py.origin) : (py.origin - px.origin).norm()) / max_distance,
+            RelationKind::Concentric, x, y);
+      }
+    }
+  }
+  for (const SegmentContact& contact : contacts) {
+    if (contact.a >= count || contact.b >= count || !primitives[std::size_t(contact.a)] ||
+        !primitives[std::size_t(contact.b)])
+      continue;
+    for (const auto& [f, g] : {std::pair<int, int>{contact.a, contact.b}, std::pair<int, int>{contact.b, contact.a}}) {
+      const Primitive& pf = prim(f);
+      const Primitive& pg = prim(g);
+      if (pf.type != PrimitiveType::Cylinder && pf.type != PrimitiveType::Torus)
+        continue;
+      if (pf.type == PrimitiveType::Cylinder && pg.type == PrimitiveType::Cylinder && pf.radius > pg.radius)
+        continue;  // of two cylinders, the thinner rounds the other
+      bool aligned = false;
+      if (pf.type == PrimitiveType::Cylinder)
+        aligned = pg.type == PrimitiveType::Plane ? std::abs(pf.axis.dot(pg.axis)) <= sin_angle
+                  : (pg.type == PrimitiveType::Cylinder || pg.type == PrimitiveType::Cone) && axis_angle(pf, pg) <= max_angle;
+      else
+        aligned = pg.type == PrimitiveType::Plane ? axis_angle(pf, pg) <= max_angle
+                  : has_axis(pg) && axis_angle(pf, pg) <= max_angle &&
+                        distance_to_axis(pg, pf.origin) <= max_distance;
+      if (!aligned)
+        continue;
+      const Eigen::Vector3d spine = fillet_spine_point(pf, contact.point);
+      const double d = project_onto_primitive(pg, spine).signed_distance;
+      add(std::abs(std::abs(d) - relation_radius(pf)) / max_distance, RelationKind::Tangent, f, g, d < 0 ? -1.0 : 1.0,
+          contact.point);
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.deviation < y.deviation; });
+
+  std::vector<Primitive> p(static_cast<std::size_t>(count));
+  for (int s = 0; s < count; ++s)
+    if (primitives[std::size_t(s)])
+      p[std::size_t(s)] = prim(s);
+  const std::vector<char> fixed(std::size_t(count), 0);
+  // One forest per kind: a pair already joined through others of that kind gets no second relation.
+  constexpr int kKinds = int(RelationKind::Tangent) + 1;
+  std::vector<std::vector<int>> parent(kKinds, std::vector<int>(std::size_t(count)));
+  for (auto& forest : parent)
+    std::iota(forest.begin(), forest.end(), 0);
+  std::vector<Relation> out;
+  for (const Candidate& candidate : candidates) {
+    const Relation& r = candidate.relation;
+    std::vector<int>& forest = parent[std::size_t(int(r.kind))];
+    const int x = find_root(forest, r.a), y = find_root(forest, r.b);
+    if (x == y && r.kind != RelationKind::Tangent)
+      continue;
+    const std::vector<double> rise = relation_cost_increase({r}, p, info, fixed, length);
+    bool ok = true;
+    for (int s : {r.a, r.b}) {
+      const FitInformation& fi = info[std::size_t(s)];
+      ok = ok && rise[std::size_t(s)] <= max_cost_increase * fi.cost + 1e-14 * length * length * fi.weight;
+    }
+    if (!ok)
+      continue;
+    forest[std::size_t(x)] = y;
+    out.push_back(r);
+  }
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif

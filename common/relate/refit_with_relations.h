@@ -1,0 +1,224 @@
+// refit_with_relations.h: refit the primitives of several segments together, with relations between them
+// holding exactly (GlobFit's constrained least squares: Li et al., "GlobFit: Consistently fitting primitives
+// by discovering global relations", SIGGRAPH 2011).
+//
+// Input:  RelatedSegment per segment: its primitive (the start: the segment's own fit), its points and
+//         weights (weight 0: not used; e.g. outliers of the segment's own robust fit), and whether it is
+//         fixed (held as it is, e.g. a segment already snapped in the edit tool); the relations
+//         (relation.h) between segments; the iteration limit.
+// Output: RelationRefit: every segment's primitive (those in no relation, and fixed ones, unchanged), the
+//         weighted RMS distance of each segment's points to it, the largest violation of a relation after
+//         the refit (in mesh units; angles times the part's size) and the iterations. A failed status when
+//         the relations could not be satisfied together within 1e-6 of the part's size (contradictory
+//         relations) or a primitive left its valid domain; the primitives are then the starts.
+// Method: minimise sum over segments of sum_i w_i d_i^2 (d: the orthogonal distance of refine_primitive.h, in
+//         its local parameters re-based after every step) subject to every relation's residual being 0.
+//         Each Levenberg-Marquardt step solves the linearised problem exactly: the KKT system of the
+//         block-diagonal damped normal matrix A and the relations' Jacobian C (central differences of
+//         relation_residual), by the Schur complement S = C A^-1 C^T with a pseudo-inverse, so that
+//         redundant relations (three planes mutually perpendicular twice over) are harmless. A step is taken
+//         when it halves the largest violation, or lowers the cost without raising the violation.
+// Cost:   per step O(N) for the normal equations (N points of the segments in relations), O(R) relation
+//         evaluations for the Jacobian (R relations, at most 14 each), and O(m^2 n + m^3) for the Schur
+//         complement (m relation components, n <= 7 K unknowns); up to max_iterations steps.
+#ifndef PRIMITIVE_EDIT_REFIT_WITH_RELATIONS_H
+#define PRIMITIVE_EDIT_REFIT_WITH_RELATIONS_H
+
+#include "common/base/canonicalize_primitive.h"
+#include "common/base/status.h"
+#include "common/fit/refine_primitive.h"
+#include "common/relate/constrained_step.h"
+#include "common/relate/relation.h"
+#include "common/relate/relation_jacobian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace primitive_edit {
+
+struct RelatedSegment
+{
+  Primitive primitive;
+  Eigen::MatrixX3d points;
+  Eigen::VectorXd weights;  // empty: all 1
+  bool fixed = false;
+};
+
+struct RelationRefit
+{
+  Status status;
+  std::vector<Primitive> primitives;  // per segment
+  std::vector<double> rms;            // per segment, weighted, on its points
+  double max_violation = 0;
+  int iterations = 0;
+};
+
+namespace relate_detail {
+
+// A length that makes angle components comparable with distances: the extent of all points.
+inline double part_size(const std::vector<RelatedSegment>& segments)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const RelatedSegment& s : segments)
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+      lo = lo.cwiseMin(s.points.row(i).transpose());
+      hi = hi.cwiseMax(s.points.row(i).transpose());
+    }
+  const double size = (hi - lo).norm();
+  return std::isfinite(size) && size > 0 ? size : 1.0;
+}
+
+inline Eigen::VectorXd weights_of(const RelatedSegment& s)
+{
+  return s.weights.size() == s.points.rows() ? s.weights : Eigen::VectorXd::Ones(s.points.rows());
+}
+
+inline double weighted_rms(const Primitive& p, const Eigen::MatrixX3d& points, const Eigen::VectorXd& w)
+{
+  double sum = 0, sum_w = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (w[i] > 0) {
+      const double d = project_onto_primitive(p, points.row(i).transpose()).signed_distance;
+      sum += w[i] * d * d;
+      sum_w += w[i];
+    }
+  return sum_w > 0 ? std::sqrt(sum / sum_w) : 0.0;
+}
+
+// The unknowns: the local parameters of every segment in a relation and not fixed (-1: none). Returns n.
+inline int relation_unknowns(const std::vector<RelatedSegment>& segments, const std::vector<Relation>& relations,
+                             std::vector<int>& offset)
+{
+  offset.assign(segments.size(), -1);
+  int n = 0;
+  for (const Relation& r : relations)
+    for (int s : {r.a, r.b})
+      if (!segments[std::size_t(s)].fixed && offset[std::size_t(s)] < 0) {
+        offset[std::size_t(s)] = n;
+        n += refine_detail::parameter_count(segments[std::size_t(s)].primitive.type);
+      }
+  return n;
+}
+
+} // namespace relate_detail
+
+inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& segments,
+                                          const std::vector<Relation>& relations, int max_iterations = 40)
+{
+  using namespace refine_detail;
+  using namespace relate_detail;
+  RelationRefit out;
+  const int count = int(segments.size());
+  for (const RelatedSegment& s : segments)
+    out.primitives.push_back(s.primitive);
+  std::vector<Eigen::VectorXd> weights;
+  for (const RelatedSegment& s : segments)
+    weights.push_back(weights_of(s));
+  auto finish = [&]() {
+    for (int s = 0; s < count; ++s)
+      out.rms.push_back(weighted_rms(out.primitives[std::size_t(s)], segments[std::size_t(s)].points,
+                                     weights[std::size_t(s)]));
+    return out;
+  };
+  for (const Relation& r : relations)
+    if (r.a < 0 || r.b < 0 || r.a >= count || r.b >= count || r.a == r.b ||
+        !primitive_is_valid(segments[std::size_t(r.a)].primitive) ||
+        !primitive_is_valid(segments[std::size_t(r.b)].primitive)) {
+      out.status = Status::failure("a relation names a segment without a valid primitive");
+      return finish();
+    }
+  std::vector<int> offset;
+  const int n = relation_unknowns(segments, relations, offset);
+  if (n == 0 || relations.empty())
+    return finish();
+  const double length = part_size(segments);
+  // Aimed at, and enough: 1e-6 and 1e-4 mm on a 100 mm part (nearly dependent relations may stop short of
+  // the aim where the pseudo-inverse cuts their multipliers).
+  const double violation_tolerance = 1e-8 * length, violation_enough = 1e-6 * length;
+
+  std::vector<Primitive>& p = out.primitives;
+  // The data term of the unknown segments at q: its cost and, if asked, each block's normal equations.
+  auto data_term = [&](const std::vector<Primitive>& q, std::vector<StepBlock>* blocks) {
+    double cost = 0;
+    if (blocks)
+      blocks->clear();
+    for (int s = 0; s < count; ++s) {
+      if (offset[std::size_t(s)] < 0)
+        continue;
+      Mat7 JtJ;
+      Vec7 Jtr;
+      cost += normal_equations(q[std::size_t(s)], segments[std::size_t(s)].points, weights[std::size_t(s)], &JtJ, &Jtr);
+      if (blocks) {
+        const int k = parameter_count(q[std::size_t(s)].type);
+        blocks->push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[std::size_t(s)]});
+      }
+    }
+    return cost;
+  };
+
+  std::vector<StepBlock> blocks;
+  double cost = data_term(p, &blocks);
+  RelationLayout layout = relation_layout(relations, p);
+  Eigen::VectorXd c = relation_values(relations, p, layout, length);
+  double violation = c.cwiseAbs().maxCoeff();
+  double lambda = 1e-6;
+  bool done = false;
+  for (out.iterations = 0; out.iterations < max_iterations && !done; ++out.iterations) {
+    const Eigen::MatrixXd C = relation_jacobian(relations, p, layout, offset, n, length);
+    bool accepted = false;
+    for (int attempt = 0; attempt < 8 && !accepted; ++attempt, lambda *= 10) {
+      const Eigen::VectorXd delta = constrained_step(blocks, C, c, lambda);
+      if (delta.size() != n)
+        continue;
+      std::vector<Primitive> trial = p;
+      bool valid = true;
+      for (int s = 0; s < count && valid; ++s) {
+        const int o = offset[std::size_t(s)];
+        if (o < 0)
+          continue;
+        const Primitive& base = p[std::size_t(s)];
+        const Eigen::Vector3d e1 = any_orthogonal(base.axis), e2 = base.axis.cross(e1);
+        Vec7 d = Vec7::Zero();
+        d.head(parameter_count(base.type)) = delta.segment(o, parameter_count(base.type));
+        valid = apply_step(base, e1, e2, d, &trial[std::size_t(s)]);
+      }
+      if (!valid)
+        continue;
+      const double trial_cost = data_term(trial, nullptr);
+      const double trial_violation = relation_values(relations, trial, layout, length).cwiseAbs().maxCoeff();
+      // Feasibility first; once feasible, the cost may fall as long as feasibility is kept.
+      const bool feasibility = violation > violation_tolerance && trial_violation < 0.5 * violation;
+      const bool better = trial_cost < cost && trial_violation <= std::max(violation, violation_tolerance);
+      if (!feasibility && !better)
+        continue;
+      done = !feasibility && cost - trial_cost <= 1e-6 * cost && trial_violation <= violation_enough;
+      p = trial;
+      cost = data_term(p, &blocks);
+      layout = relation_layout(relations, p);
+      c = relation_values(relations, p, layout, length);
+      violation = c.cwiseAbs().maxCoeff();
+      lambda = std::max(lambda * 0.01, 1e-12);  // times 10 by the loop
+      accepted = true;
+    }
+    if (!accepted)
+      break;
+  }
+  out.max_violation = violation;
+  if (!(violation <= violation_enough)) {
+    out.status = Status::failure("the relations cannot all hold together (largest violation " +
+                                 std::to_string(violation) + ")");
+    for (int s = 0; s < count; ++s)
+      p[std::size_t(s)] = segments[std::size_t(s)].primitive;
+    return finish();
+  }
+  for (int s = 0; s < count; ++s)
+    if (offset[std::size_t(s)] >= 0)
+      p[std::size_t(s)] = canonicalize_primitive(p[std::size_t(s)], segments[std::size_t(s)].points, weights[std::size_t(s)]);
+  return finish();
+}
+
+} // namespace primitive_edit
+
+#endif

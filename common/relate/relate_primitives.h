@@ -1,0 +1,213 @@
+// relate_primitives.h: the relations a part's fitted primitives share, and the primitives refitted together
+// under them (issue: per-segment fits of a rough scan tilt, shift and resize each feature on its own).
+//
+// Input:  per segment its fitted primitive (std::nullopt: free-form, left out) and its samples
+//         (gather_segment_samples.h: points and weights), the segments' contacts (segment_contacts.h), the
+//         scan's noise (RMS, 0 if unknown), which segments are held fixed (empty: none), and RelationOptions.
+// Output: RelatedPrimitives: the relations kept, each segment's primitive after the joint refit (the input
+//         where the segment is in no relation), the relations the check after the refit dropped, and a
+//         status (failed only for bad options). Nothing is invented: a relation is kept only when making it
+//         hold raises no segment's fit cost (sum of squared distances) by more than
+//         options.max_cost_increase of it, first predicted (detect_*_relations.h), then checked on the refit
+//         (at most twice that share: several relations add up); a segment that fails the check loses its
+//         positional relations, then its directional ones, and the refit is run again.
+// Method: 1. directions: parallel classes and the part's frame (detect_direction_relations.h), refit
+//            (refit_with_relations.h); 2. positions: coaxial, concentric, coplanar, equal radii, tangent
+//            fillets (detect_position_relations.h) among the refitted primitives, refit with all relations;
+//            3. the check. Every segment is represented by at most kRelateSamples of its points (evenly
+//            strided, weights scaled to keep its total), weighted by its own fit's robust (Tukey) weights, so
+//            that outliers at its border do not pull the joint fit either.
+// Cost:   O(N) to take the samples, then the detections and up to 6 refits on at most kRelateSamples points a
+//         segment.
+#ifndef PRIMITIVE_EDIT_RELATE_PRIMITIVES_H
+#define PRIMITIVE_EDIT_RELATE_PRIMITIVES_H
+
+#include "common/base/constants.h"
+#include "common/base/status.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/mesh/segment_contacts.h"
+#include "common/relate/detect_direction_relations.h"
+#include "common/relate/detect_position_relations.h"
+#include "common/relate/fit_information.h"
+#include "common/relate/refit_with_relations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace primitive_edit {
+
+struct RelationOptions
+{
+  double angle_deg = 10;           // directions within this of parallel, perpendicular or 45 degrees are candidates
+  double distance = 0;             // positions within this are candidates; <= 0: 3 x the noise (1% of the part without)
+  double max_cost_increase = 0.1;  // the share by which a relation may raise a segment's fit cost
+};
+
+struct RelatedPrimitives
+{
+  Status status;
+  std::vector<Relation> relations;  // kept, after the refit
+  std::vector<std::optional<Primitive>> primitives;
+  int dropped = 0;       // relations found but dropped by the check after the refit
+  double distance = 0;   // the distance tolerance used
+};
+
+constexpr Eigen::Index kRelateSamples = 3000;
+
+namespace relate_detail {
+
+// At most `count` evenly strided samples with weights scaled to keep the total, times the robust weights of
+// the segment's own fit at p.
+inline RelatedSegment related_segment(const Primitive& p, const SegmentSamples& s, Eigen::Index count)
+{
+  RelatedSegment out;
+  out.primitive = p;
+  const Eigen::Index n = s.points.rows();
+  const Eigen::Index m = std::min(n, count);
+  out.points.resize(m, 3);
+  Eigen::VectorXd w(m);
+  const Eigen::VectorXd all = s.weights.size() == n ? s.weights : Eigen::VectorXd::Ones(n);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Eigen::Index j = m == n ? i : (i * n) / m;
+    out.points.row(i) = s.points.row(j);
+    w[i] = all[j];
+  }
+  if (w.sum() > 0)
+    w *= all.sum() / w.sum();
+  double extent = 0;
+  if (m > 0)
+    extent = (out.points.colwise().maxCoeff() - out.points.colwise().minCoeff()).norm();
+  out.weights = refine_detail::tukey_weights(p, out.points, w, 1.0, 1e-9 * std::max(extent, 1e-300));
+  return out;
+}
+
+// The segment whose cost after the refit most exceeds (1 + 2 max_cost_increase) of its own fit's, -1: none.
+inline int worst_segment(const RelationRefit& refit, const std::vector<FitInformation>& own,
+                         const std::vector<const Primitive*>& related, double max_cost_increase, double length)
+{
+  int worst = -1;
+  double worst_ratio = 1.0;
+  for (std::size_t s = 0; s < related.size(); ++s) {
+    if (!related[s])
+      continue;
+    const double after = refit.rms[s] * refit.rms[s] * own[s].weight;
+    const double allowed = (1 + 2 * max_cost_increase) * own[s].cost + 1e-14 * length * length * own[s].weight;
+    if (after > allowed && after / allowed > worst_ratio) {
+      worst = int(s);
+      worst_ratio = after / allowed;
+    }
+  }
+  return worst;
+}
+
+// Drops segment `worst`'s positional relations, or its directional ones when it has no positional one left
+// (worst < 0: all positional relations, then all); returns how many were dropped.
+inline int drop_relations_of(int worst, std::vector<Relation>& kept, std::vector<char>& is_position)
+{
+  auto involves = [&](std::size_t r) { return worst < 0 || kept[r].a == worst || kept[r].b == worst; };
+  bool any_position = false;
+  for (std::size_t r = 0; r < kept.size(); ++r)
+    any_position = any_position || (is_position[r] && involves(r));
+  std::vector<Relation> next;
+  std::vector<char> next_is_position;
+  for (std::size_t r = 0; r < kept.size(); ++r)
+    if (!involves(r) || (any_position && !is_position[r])) {
+      next.push_back(kept[r]);
+      next_is_position.push_back(is_position[r]);
+    }
+  const int dropped = int(kept.size() - next.size());
+  kept.swap(next);
+  is_position.swap(next_is_position);
+  return dropped;
+}
+
+} // namespace relate_detail
+
+inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primitive>>& fitted,
+                                           const std::vector<SegmentSamples>& samples,
+                                           const std::vector<SegmentContact>& contacts, double noise,
+                                           const RelationOptions& options, const std::vector<char>& fixed = {})
+{
+  using namespace relate_detail;
+  RelatedPrimitives out;
+  out.primitives = fitted;
+  if (!(options.angle_deg > 0 && options.angle_deg < 90) || !std::isfinite(options.distance) ||
+      !(options.max_cost_increase > 0) || !std::isfinite(options.max_cost_increase)) {
+    out.status = Status::failure("the relation angle must be between 0 and 90 degrees, the distance finite and the "
+                                 "cost share positive");
+    return out;
+  }
+  const int count = int(std::min(fitted.size(), samples.size()));
+  std::vector<RelatedSegment> segments(static_cast<std::size_t>(count));
+  std::vector<const Primitive*> start(std::size_t(count), nullptr);
+  for (int s = 0; s < count; ++s) {
+    const std::optional<Primitive>& p = fitted[std::size_t(s)];
+    if (!p || !primitive_is_valid(*p) || samples[std::size_t(s)].points.rows() == 0)
+      continue;
+    segments[std::size_t(s)] = related_segment(*p, samples[std::size_t(s)], kRelateSamples);
+    segments[std::size_t(s)].fixed = std::size_t(s) < fixed.size() && fixed[std::size_t(s)];
+    if (segments[std::size_t(s)].weights.sum() > 0)
+      start[std::size_t(s)] = &segments[std::size_t(s)].primitive;
+  }
+  const double length = part_size(segments);
+  out.distance = options.distance > 0 ? options.distance : noise > 0 ? 3.0 * noise : 0.01 * length;
+  const double angle = radians_from_degrees(options.angle_deg);
+
+  auto information = [&](const std::vector<const Primitive*>& p) {
+    std::vector<FitInformation> info(static_cast<std::size_t>(count));
+    for (int s = 0; s < count; ++s)
+      if (p[std::size_t(s)])
+        info[std::size_t(s)] = fit_information(*p[std::size_t(s)], segments[std::size_t(s)].points,
+                                               segments[std::size_t(s)].weights);
+    return info;
+  };
+  const std::vector<FitInformation> info0 = information(start);
+
+  // 1. Directions.
+  std::vector<Relation> directions = detect_direction_relations(start, info0, angle, options.max_cost_increase, length);
+  RelationRefit first = refit_with_relations(segments, directions);
+  if (!first.status)
+    directions.clear(), first = refit_with_relations(segments, directions);
+  // 2. Positions, among the primitives refitted under the directions.
+  std::vector<const Primitive*> turned(std::size_t(count), nullptr);
+  for (int s = 0; s < count; ++s)
+    if (start[std::size_t(s)])
+      turned[std::size_t(s)] = &first.primitives[std::size_t(s)];
+  const std::vector<Relation> positions = detect_position_relations(
+      turned, information(turned), contacts, angle, out.distance, options.max_cost_increase, length);
+
+  // 3. Refit with all, and check every segment against its own fit; drop what breaks a segment.
+  std::vector<Relation> kept = directions;
+  const std::size_t first_position = kept.size();
+  kept.insert(kept.end(), positions.begin(), positions.end());
+  std::vector<char> is_position(kept.size(), 0);
+  std::fill(is_position.begin() + std::ptrdiff_t(first_position), is_position.end(), 1);
+  RelationRefit refit;
+  for (int round = 0;; ++round) {
+    std::vector<RelatedSegment> from = segments;
+    for (int s = 0; s < count; ++s)
+      from[std::size_t(s)].primitive = first.primitives[std::size_t(s)];
+    refit = refit_with_relations(round == 0 ? from : segments, kept);
+    const int worst = refit.status ? worst_segment(refit, info0, start, options.max_cost_increase, length) : -1;
+    if ((refit.status && worst < 0) || kept.empty() || round == 8)
+      break;
+    out.dropped += drop_relations_of(worst, kept, is_position);
+  }
+  if (!refit.status) {
+    out.dropped += int(kept.size());
+    kept.clear();
+    refit = refit_with_relations(segments, kept);
+  }
+  out.relations = kept;
+  for (int s = 0; s < count; ++s)
+    if (start[std::size_t(s)])
+      out.primitives[std::size_t(s)] = refit.primitives[std::size_t(s)];
+  return out;
+}
+
+} // namespace primitive_edit
+
+#endif

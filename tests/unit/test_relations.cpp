@@ -1,0 +1,269 @@
+// Relations between primitives and their joint refit (common/relate/), on a synthetic machined part: a plate
+// with sides, two equal holes, a boss over a coaxial bore, a fillet along an edge, plus a hole tilted on
+// purpose. The relations a designer put there are found and hold exactly after the refit; the tilted hole
+// gets none; an exact part stays exact.
+#include "common/fit/fit_primitive.h"
+#include "common/relate/relate_primitives.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace primitive_edit;
+
+// Points on a primitive's patch (plane: a rectangle corner + s u + t v; cylinder: axis from origin, height
+// h, angles [a0, a1]), with Gaussian noise along the normal.
+struct Patch
+{
+  Primitive truth;
+  SegmentSamples samples;
+};
+
+void add_noise(SegmentSamples& s, double sigma, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> N(0.0, 1.0);
+  for (Eigen::Index i = 0; i < s.points.rows(); ++i)
+    s.points.row(i) += sigma * N(rng) * s.normals.row(i);
+}
+
+Patch plane_patch(const Eigen::Vector3d& corner, const Eigen::Vector3d& u, const Eigen::Vector3d& v, int n, double sigma,
+                  unsigned seed)
+{
+  Patch p;
+  p.truth.type = PrimitiveType::Plane;
+  p.truth.origin = corner;
+  p.truth.axis = u.cross(v).normalized();
+  std::mt19937 rng(seed + 1000);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  p.samples.points.resize(n, 3);
+  p.samples.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    p.samples.points.row(i) = (corner + U(rng) * u + U(rng) * v).transpose();
+    p.samples.normals.row(i) = p.truth.axis.transpose();
+  }
+  p.samples.weights = Eigen::VectorXd::Constant(n, u.cross(v).norm() / n);
+  p.samples.area = u.cross(v).norm();
+  add_noise(p.samples, sigma, seed);
+  return p;
+}
+
+Patch cylinder_patch(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double radius, double height, double a0,
+                     double a1, int n, double sigma, unsigned seed)
+{
+  Patch p;
+  p.truth.type = PrimitiveType::Cylinder;
+  p.truth.origin = base;
+  p.truth.axis = axis.normalized();
+  p.truth.radius = radius;
+  const Eigen::Vector3d e1 = any_orthogonal(p.truth.axis), e2 = p.truth.axis.cross(e1);
+  std::mt19937 rng(seed + 1000);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  p.samples.points.resize(n, 3);
+  p.samples.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double a = a0 + (a1 - a0) * U(rng);
+    const Eigen::Vector3d r = std::cos(a) * e1 + std::sin(a) * e2;
+    p.samples.points.row(i) = (base + height * U(rng) * p.truth.axis + radius * r).transpose();
+    p.samples.normals.row(i) = r.transpose();
+  }
+  p.samples.area = radius * (a1 - a0) * height;
+  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
+  add_noise(p.samples, sigma, seed);
+  return p;
+}
+
+// A cylinder patch whose angles are measured from a given direction (e1) around the axis.
+Patch fillet_patch(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, const Eigen::Vector3d& from,
+                   const Eigen::Vector3d& to, double radius, double length, int n, double sigma, unsigned seed)
+{
+  Patch p = cylinder_patch(base, axis, radius, length, 0, 1, 1, 0, seed);
+  std::mt19937 rng(seed + 1000);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  p.samples.points.resize(n, 3);
+  p.samples.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double t = U(rng);
+    const Eigen::Vector3d r = (std::cos(t * kPi / 2) * from + std::sin(t * kPi / 2) * to).normalized();
+    p.samples.points.row(i) = (base + length * U(rng) * p.truth.axis + radius * r).transpose();
+    p.samples.normals.row(i) = r.transpose();
+  }
+  p.samples.area = radius * kPi / 2 * length;
+  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
+  add_noise(p.samples, sigma, seed);
+  return p;
+}
+
+enum Part { Top, Bottom, SideY, SideX, HoleA, HoleB, Boss, Bore, Fillet, Tilted, PartCount };
+
+struct Scene
+{
+  std::vector<Patch> patches;
+  std::vector<SegmentContact> contacts;
+};
+
+Scene make_part(double sigma)
+{
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  Scene s;
+  s.patches.resize(PartCount);
+  s.patches[Top] = plane_patch(Eigen::Vector3d(0, 1.5, 5), 60 * X, 28.5 * Y, 4000, sigma, 1);
+  s.patches[Bottom] = plane_patch(Eigen::Vector3d(0, 0, 0), 30 * Y, 60 * X, 4000, sigma, 2);
+  s.patches[SideY] = plane_patch(Eigen::Vector3d(0, 0, 0), 60 * X, 3.5 * Z, 800, sigma, 3);
+  s.patches[SideX] = plane_patch(Eigen::Vector3d(0, 0, 0), 5 * Z, 30 * Y, 800, sigma, 4);
+  s.patches[HoleA] = cylinder_patch(Eigen::Vector3d(15, 15, 0), Z, 3, 5, 0, 2 * kPi, 1500, sigma, 5);
+  s.patches[HoleB] = cylinder_patch(Eigen::Vector3d(45, 15, 0), Z, 3, 5, 0, 2 * kPi, 1500, sigma, 6);
+  s.patches[Boss] = cylinder_patch(Eigen::Vector3d(30, 20, 5), Z, 6, 4, 0, 2 * kPi, 1500, sigma, 7);
+  s.patches[Bore] = cylinder_patch(Eigen::Vector3d(30, 20, 0), Z, 3.5, 9, 0, 2 * kPi, 1500, sigma, 8);
+  // The fillet rounds the edge of the top and the side y = 0: axis along x at y = z - 3.5 = 1.5.
+  s.patches[Fillet] = fillet_patch(Eigen::Vector3d(0, 1.5, 3.5), X, -Y, Z, 1.5, 60, 1500, sigma, 9);
+  // Tilted on purpose by 8 degrees about y: within the relation angle, but its data says it is tilted.
+  const Eigen::Vector3d tilted(std::sin(radians_from_degrees(8)), 0, std::cos(radians_from_degrees(8)));
+  s.patches[Tilted] = cylinder_patch(Eigen::Vector3d(52, 8, -3), tilted, 2.2, 11, 0, 2 * kPi, 1500, sigma, 10);
+  s.contacts = {{Top, Fillet, 100, Eigen::Vector3d(30, 1.5, 5)}, {SideY, Fillet, 100, Eigen::Vector3d(30, 0, 3.5)}};
+  return s;
+}
+
+std::vector<std::optional<Primitive>> fit_each(const Scene& s)
+{
+  std::vector<std::optional<Primitive>> out;
+  for (const Patch& p : s.patches) {
+    const FitResult r = fit_primitive(p.truth.type, p.samples.points, p.samples.normals, p.samples.weights);
+    EXPECT_TRUE(r.status.ok()) << r.status.error;
+    out.push_back(r.primitive);
+  }
+  return out;
+}
+
+std::vector<SegmentSamples> samples_of(const Scene& s)
+{
+  std::vector<SegmentSamples> out;
+  for (const Patch& p : s.patches)
+    out.push_back(p.samples);
+  return out;
+}
+
+bool has_relation(const std::vector<Relation>& relations, RelationKind kind, int a, int b)
+{
+  for (const Relation& r : relations)
+    if (r.kind == kind && ((r.a == a && r.b == b) || (r.a == b && r.b == a)))
+      return true;
+  return false;
+}
+
+bool involves(const std::vector<Relation>& relations, int s)
+{
+  return std::any_of(relations.begin(), relations.end(), [&](const Relation& r) { return r.a == s || r.b == s; });
+}
+
+double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return degrees_from_radians(std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))));
+}
+
+double axis_offset(const Primitive& a, const Primitive& b)
+{
+  const Eigen::Vector3d d = b.origin - a.origin;
+  return (d - d.dot(a.axis) * a.axis).norm();
+}
+
+std::string describe(const std::vector<Relation>& relations)
+{
+  std::string out;
+  for (const Relation& r : relations)
+    out += std::string(relation_kind_name(r.kind)) + "(" + std::to_string(r.a) + "," + std::to_string(r.b) + ") ";
+  return out;
+}
+
+TEST(Relations, FoundAndEnforcedOnANoisyPart)
+{
+  const Scene scene = make_part(0.05);
+  const std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  const RelatedPrimitives r = relate_primitives(fitted, samples_of(scene), scene.contacts, 0.05, RelationOptions());
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
+  const std::vector<Relation>& rel = r.relations;
+  SCOPED_TRACE(describe(rel));
+  const std::vector<std::optional<Primitive>>& p = r.primitives;
+
+  // Directions: the top and bottom parallel, the sides square to them and to each other, the holes, boss and
+  // bore along z, the fillet along x: all to round-off after the refit.
+  for (int s : {Bottom, HoleA, HoleB, Boss, Bore})
+    EXPECT_LT(angle_deg(p[Top]->axis, p[std::size_t(s)]->axis), 1e-6) << "segment " << s;
+  for (int s : {SideY, SideX, Fillet})
+    EXPECT_NEAR(angle_deg(p[Top]->axis, p[std::size_t(s)]->axis), 90, 1e-6) << "segment " << s;
+  EXPECT_NEAR(angle_deg(p[SideY]->axis, p[SideX]->axis), 90, 1e-6);
+  EXPECT_LT(angle_deg(p[SideX]->axis, p[Fillet]->axis), 1e-6);
+  // Positions and sizes: equal holes, the boss over its bore, the fillet tangent to both faces it rounds.
+  EXPECT_TRUE(has_relation(rel, RelationKind::EqualRadius, HoleA, HoleB));
+  EXPECT_NEAR(p[HoleA]->radius, p[HoleB]->radius, 1e-9);
+  EXPECT_TRUE(has_relation(rel, RelationKind::Coaxial, Boss, Bore));
+  EXPECT_LT(axis_offset(*p[Boss], *p[Bore]), 1e-9);
+  EXPECT_TRUE(has_relation(rel, RelationKind::Tangent, Fillet, Top));
+  EXPECT_TRUE(has_relation(rel, RelationKind::Tangent, Fillet, SideY));
+  for (int face : {Top, SideY}) {
+    const double spine = std::abs(project_onto_primitive(*p[std::size_t(face)], p[Fillet]->origin).signed_distance);
+    EXPECT_NEAR(spine, p[Fillet]->radius, 1e-9) << "face " << face;
+  }
+  // The hole tilted on purpose keeps its own fit.
+  EXPECT_FALSE(involves(rel, Tilted));
+  EXPECT_NEAR(angle_deg(p[Tilted]->axis, Eigen::Vector3d::UnitZ()), 8, 0.5);
+  EXPECT_EQ(p[Tilted]->origin, fitted[Tilted]->origin);
+
+  // Held by the whole part, every direction and the fillet are near the truth.
+  for (int s = 0; s < PartCount; ++s)
+    if (s != Tilted)
+      EXPECT_LT(angle_deg(p[std::size_t(s)]->axis, scene.patches[std::size_t(s)].truth.axis), 0.05) << "segment " << s;
+  EXPECT_LT(std::abs(p[Fillet]->radius - 1.5), 0.02);
+}
+
+TEST(Relations, AnExactPartStaysExact)
+{
+  const Scene scene = make_part(0.0);
+  const std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  const RelatedPrimitives r = relate_primitives(fitted, samples_of(scene), scene.contacts, 0.0, RelationOptions());
+  ASSERT_TRUE(r.status.ok());
+  SCOPED_TRACE(describe(r.relations));
+  EXPECT_TRUE(has_relation(r.relations, RelationKind::Coaxial, Boss, Bore));
+  EXPECT_TRUE(has_relation(r.relations, RelationKind::Tangent, Fillet, Top));
+  for (int s = 0; s < PartCount; ++s) {
+    const Primitive& truth = scene.patches[std::size_t(s)].truth;
+    const Primitive& got = *r.primitives[std::size_t(s)];
+    EXPECT_LT(angle_deg(got.axis, truth.axis), 1e-7) << "segment " << s;
+    EXPECT_NEAR(got.radius, truth.radius, 1e-8) << "segment " << s;
+    // The truth's origin lies on the refitted surface (or axis).
+    if (truth.type == PrimitiveType::Plane)
+      EXPECT_NEAR(project_onto_primitive(got, truth.origin).signed_distance, 0, 1e-8) << "segment " << s;
+    else
+      EXPECT_LT(axis_offset(got, truth), 1e-8) << "segment " << s;
+  }
+}
+
+TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
+{
+  const Scene scene = make_part(0.05);
+  std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  RelationOptions bad;
+  bad.angle_deg = 95;
+  EXPECT_FALSE(relate_primitives(fitted, samples_of(scene), scene.contacts, 0.05, bad).status.ok());
+  bad = RelationOptions();
+  bad.max_cost_increase = std::nan("");
+  EXPECT_FALSE(relate_primitives(fitted, samples_of(scene), scene.contacts, 0.05, bad).status.ok());
+  // Free-form segments (no primitive) take no part; nothing to relate is no error.
+  fitted[Boss].reset();
+  const RelatedPrimitives r = relate_primitives(fitted, samples_of(scene), scene.contacts, 0.05, RelationOptions());
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_FALSE(involves(r.relations, Boss));
+  EXPECT_FALSE(r.primitives[Boss].has_value());
+  const RelatedPrimitives none = relate_primitives({}, {}, {}, 0.0, RelationOptions());
+  EXPECT_TRUE(none.status.ok());
+  EXPECT_TRUE(none.relations.empty());
+}
+
+} // namespace
