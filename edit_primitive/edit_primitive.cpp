@@ -10,9 +10,11 @@
 #include <wrap/gl/pick.h>
 #include <wrap/qt/device_to_logical.h>
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QMouseEvent>
 
 #include <limits>
@@ -109,6 +111,7 @@ bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedData
   else
     dock_->setFloating(true);
   dock_->show();
+  panel_->setStatus(QString());
   gla->setCursor(Qt::CrossCursor);
   // The keys of the tool (M, F, Enter, ...) go to the view.
   gla->setFocus();
@@ -120,6 +123,9 @@ bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedData
 
 void EditPrimitivePlugin::end(MeshModel&, GLArea* gla, MLSceneGLSharedDataContext*)
 {
+  if (session_.attached() && session_.can_undo())
+    logLine(QString("Primitive Edit: closed; its %1 undo step(s) are gone (the mesh keeps its segments and shape).")
+                .arg(session_.undo_depth()));
   session_.detach();
   if (dock_ != nullptr)
     dock_->hide();
@@ -164,7 +170,7 @@ QString EditPrimitivePlugin::pickedText() const
   for (int s : session_.picked())
     ids << QString::number(s);
   if (ids.isEmpty())
-    return QString();
+    return QString("no segment");
   return QString("segment%1 %2 (%3 faces)")
       .arg(ids.size() > 1 ? "s" : "", ids.join(", "))
       .arg(session_.picked_faces().size());
@@ -185,7 +191,7 @@ void EditPrimitivePlugin::refresh(bool geometry_moved)
   if (panel_ != nullptr) {
     panel_->setSegmentInfo(session_.segment_count(), pickedText());
     panel_->setCanUndo(session_.can_undo(), QString::fromStdString(session_.undo_label()));
-    panel_->showPrimitive(session_.edited(), session_.last_fit() ? session_.last_fit()->rms : 0.0);
+    panel_->showPrimitive(session_.edited(), session_.edited_rms());
   }
   if (context_ != nullptr) {
     MLRenderingData::RendAtts atts;
@@ -206,9 +212,18 @@ void EditPrimitivePlugin::segment()
 {
   if (model_ == nullptr)
     return;
-  SegmentByNormalAngleParams params;
-  params.angle_deg = panel_->angle();
-  const EditOutcome outcome = session_.auto_segment(params);
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  EditOutcome outcome;
+  if (panel_->segmentByPrimitiveFit()) {
+    SegmentByPrimitiveGrowingParams params;
+    params.tolerance = panel_->segmentTolerance();
+    outcome = session_.auto_segment(params);
+  } else {
+    SegmentByNormalAngleParams params;
+    params.angle_deg = panel_->angle();
+    outcome = session_.auto_segment(params);
+  }
+  QApplication::restoreOverrideCursor();
   report("automatic segmentation", outcome);
   refresh(false);
 }
@@ -243,6 +258,8 @@ void EditPrimitivePlugin::fit()
                std::to_string(result.point_count) + " points");
   else
     report(false, what, result.status.error);
+  if (const std::string warning = session_.fit_warning(); !warning.empty())
+    report(false, what, warning);
   if (result.status.ok() && !type)
     panel_->setType(result.primitive.type);
   refresh(false);
@@ -252,8 +269,13 @@ void EditPrimitivePlugin::parametersEdited()
 {
   if (!session_.edited())
     return;
-  const EditOutcome outcome = session_.set_edited(panel_->editedPrimitive());
-  report("edited primitive", outcome);
+  QString error;
+  const std::optional<Primitive> typed = panel_->editedPrimitive(&error);
+  const EditOutcome outcome =
+      typed ? session_.set_edited(*typed) : EditOutcome::refused(error.toStdString());
+  // A refused value is not kept: the fields show the primitive in use again.
+  report("edited primitive", outcome.status.ok() ? outcome : EditOutcome::refused(outcome.status.error +
+                                                                                    "; the previous value is kept"));
   refresh(false);
 }
 
@@ -261,11 +283,35 @@ void EditPrimitivePlugin::apply()
 {
   if (model_ == nullptr)
     return;
-  // A value typed but not yet confirmed counts.
-  if (session_.edited())
-    session_.set_edited(panel_->editedPrimitive());
+  // A value typed but not yet confirmed counts; one that is refused stops the apply.
+  if (session_.edited()) {
+    QString error;
+    const std::optional<Primitive> typed = panel_->editedPrimitive(&error);
+    const EditOutcome edited = typed ? session_.set_edited(*typed) : EditOutcome::refused(error.toStdString());
+    if (!edited.status.ok()) {
+      report("apply", EditOutcome::refused(edited.status.error + "; nothing applied"));
+      refresh(false);
+      return;
+    }
+  }
   const QString what = QString("apply to %1").arg(pickedText());
-  const ApplyOutcome outcome = session_.apply(true);
+  ApplyOutcome outcome = session_.apply(true);
+  if (outcome.needs_confirmation) {
+    report(false, what, outcome.status.error);
+    const QMessageBox::StandardButton answer = QMessageBox::warning(
+        gla_, "Primitive Edit",
+        QString("Applying moves vertices by up to %1, more than the picked segments' size (%2).\n"
+                "The primitive may be far from the segment (check its parameters). Apply anyway?")
+            .arg(outcome.max_move, 0, 'g', 4)
+            .arg(outcome.segment_size, 0, 'g', 4),
+        QMessageBox::Apply | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Apply) {
+      report(false, what, "cancelled; the mesh is unchanged");
+      refresh(false);
+      return;
+    }
+    outcome = session_.apply(true, true);
+  }
   if (outcome.status.ok()) {
     const SnapReport& r = outcome.report;
     report(true, what,
@@ -450,14 +496,32 @@ void EditPrimitivePlugin::drawOverlay()
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthFunc(GL_LEQUAL);
   if (!highlight_.empty()) {
-    // Picked segments: a translucent yellow veil just in front of the surface.
+    // Picked segments: black and white diagonal hatching just in front of the surface. A pattern, not a
+    // colour, so it cannot be mistaken for a segment's own colour.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.f, -1.f);
-    glColor4f(1.f, 1.f, 0.2f, 0.45f);
+    glEnable(GL_POLYGON_STIPPLE);
     glEnableClientState(GL_VERTEX_ARRAY);
     glVertexPointer(3, GL_FLOAT, 0, highlight_.data());
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(highlight_.size() / 3));
+    for (int pass = 0; pass < 2; ++pass) {
+      GLubyte pattern[128];  // 32 x 32 bits, stripes 4 pixels wide
+      for (int y = 0; y < 32; ++y)
+        for (int byte = 0; byte < 4; ++byte) {
+          GLubyte bits = 0;
+          for (int bit = 0; bit < 8; ++bit)
+            if ((((byte * 8 + bit + y) / 4) % 2) == pass)
+              bits = GLubyte(bits | (0x80 >> bit));
+          pattern[y * 4 + byte] = bits;
+        }
+      glPolygonStipple(pattern);
+      if (pass == 0)
+        glColor4f(1.f, 1.f, 1.f, 0.75f);
+      else
+        glColor4f(0.f, 0.f, 0.f, 0.55f);
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(highlight_.size() / 3));
+    }
     glDisableClientState(GL_VERTEX_ARRAY);
+    glDisable(GL_POLYGON_STIPPLE);
   }
   if (wireframe_.rows() > 0) {
     // The edited primitive: bright where visible, faint where hidden behind the mesh.

@@ -1,6 +1,8 @@
 #include "primitive_edit_panel.h"
 
 #include "common/base/constants.h"
+#include "common/segment/segment_by_normal_angle.h"
+#include "common/segment/segment_by_primitive_growing.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -8,6 +10,8 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -20,7 +24,10 @@ using primitive_edit::PrimitiveType;
 namespace {
 
 constexpr double kDegrees = primitive_edit::degrees_from_radians(1.0);  // degrees per radian
-constexpr double kBig = 1e9;
+constexpr int kPanelWidth = 280;  // pixels: fixed, so that the view beside the panel never moves
+
+// Full precision, shortest form: what the user reads is the value in use.
+QString show_number(double x) { return QString::number(x, 'g', 10); }
 
 } // namespace
 
@@ -28,21 +35,40 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
 {
   auto* layout = new QVBoxLayout(this);
 
+  setFixedWidth(kPanelWidth);
   auto* segmentation = new QGroupBox("Segments", this);
   auto* seg_layout = new QFormLayout(segmentation);
+  segmentation_fields_ = seg_layout;
+  method_ = new QComboBox(segmentation);
+  method_->addItems({"Primitive fit (scans)", "Normal angle"});
+  method_->setToolTip("Primitive fit grows segments over faces within tolerance of a fitted primitive: for scans "
+                      "with rough surfaces and blurred edges (as Segment: Auto by Primitive Fit). Normal angle "
+                      "joins faces whose normals differ little: for clean meshes (as Segment: Auto by Normal "
+                      "Angle).");
+  seg_layout->addRow("&Method", method_);
+  const primitive_edit::SegmentByPrimitiveGrowingParams growing;
+  tolerance_ = new QDoubleSpinBox(segmentation);
+  tolerance_->setRange(0, 1e6);
+  tolerance_->setDecimals(4);
+  tolerance_->setValue(growing.tolerance);
+  tolerance_->setSpecialValueText("automatic");
+  tolerance_->setToolTip("A face joins a primitive within this distance (mesh units); automatic: 3 times the "
+                         "scan's roughness, which is estimated.");
+  seg_layout->addRow("Tolerance", tolerance_);
+  const primitive_edit::SegmentByNormalAngleParams normal_angle;
   angle_ = new QDoubleSpinBox(segmentation);
   angle_->setRange(1, 89);
   angle_->setDecimals(1);
-  angle_->setValue(30);
+  angle_->setValue(normal_angle.angle_deg);
   angle_->setSuffix(QString::fromUtf8(" °"));
   angle_->setToolTip("Adjacent faces whose normals differ by less than this angle join one segment.");
+  seg_layout->addRow("Angle", angle_);
   auto* segment = new QPushButton("&Segment", segmentation);
-  segment->setToolTip("Automatic segmentation by normal angle (key S in the view); replaces the segments.");
-  auto* angle_row = new QHBoxLayout;
-  angle_row->addWidget(angle_);
-  angle_row->addWidget(segment);
-  seg_layout->addRow("Angle", angle_row);
+  segment->setToolTip("Automatic segmentation by the chosen method (key S in the view); replaces the segments "
+                      "(Undo restores them).");
+  seg_layout->addRow(segment);
   segments_ = new QLabel(segmentation);
+  segments_->setWordWrap(true);
   seg_layout->addRow("Count", segments_);
   picked_ = new QLabel(segmentation);
   picked_->setWordWrap(true);
@@ -59,16 +85,16 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   auto* fit = new QPushButton("&Fit", primitive);
   fit->setToolTip("Fit the chosen type to the picked segments (key F).");
   auto* type_row = new QHBoxLayout;
-  type_row->addWidget(type_);
+  type_row->addWidget(type_, 1);
   type_row->addWidget(fit);
   fields_->addRow("Type", type_row);
-  radius_ = addField("Radius", 0, kBig, 5);
-  minor_ = addField("Minor radius", 0, kBig, 5);
-  half_angle_ = addField("Half-angle (°)", 0, 90, 4);
+  radius_ = addField("Radius");
+  minor_ = addField("Minor radius");
+  half_angle_ = addField("Half-angle (°)");
   for (int i = 0; i < 3; ++i)
-    axis_[i] = addField(QString("Axis ") + QChar('x' + i), -1, 1, 6);
+    axis_[i] = addField(QString("Axis ") + QChar('x' + i));
   for (int i = 0; i < 3; ++i)
-    origin_[i] = addField(QString("Centre ") + QChar('x' + i), -kBig, kBig, 5);
+    origin_[i] = addField(QString("Centre ") + QChar('x' + i));
   rms_ = new QLabel(primitive);
   fields_->addRow("RMS", rms_);
   apply_ = new QPushButton("&Apply", primitive);
@@ -91,6 +117,11 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   layout->addStretch(1);
 
   connect(segment, &QPushButton::clicked, this, &PrimitiveEditPanel::segmentRequested);
+  connect(method_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          &PrimitiveEditPanel::updateSegmentationFields);
+  // A method chosen (Alt+M and the arrow keys, or the mouse): the keys go back to the view, S segments.
+  connect(method_, QOverload<int>::of(&QComboBox::activated), this, &PrimitiveEditPanel::viewFocusRequested);
+  updateSegmentationFields();
   connect(merge, &QPushButton::clicked, this, &PrimitiveEditPanel::mergeRequested);
   connect(fit, &QPushButton::clicked, this, &PrimitiveEditPanel::fitRequested);
   connect(apply_, &QPushButton::clicked, this, &PrimitiveEditPanel::applyRequested);
@@ -99,27 +130,39 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   setCanUndo(false, QString());
 }
 
-QDoubleSpinBox* PrimitiveEditPanel::addField(const QString& label, double min, double max, int decimals)
+QLineEdit* PrimitiveEditPanel::addField(const QString& label)
 {
-  auto* field = new QDoubleSpinBox(this);
-  field->setRange(min, max);
-  field->setDecimals(decimals);
-  field->setKeyboardTracking(false);
+  auto* field = new QLineEdit(this);
   field->setObjectName(label);
   fields_->addRow(label, field);
-  connect(field, &QDoubleSpinBox::editingFinished, this, [this, field] { fieldEdited(field); });
+  connect(field, &QLineEdit::editingFinished, this, [this, field] { fieldEdited(field); });
   return field;
 }
 
-void PrimitiveEditPanel::fieldEdited(QDoubleSpinBox* field)
+void PrimitiveEditPanel::fieldEdited(QLineEdit* field)
 {
-  if (filling_ || !shown_)
+  // editingFinished comes on Return and again when the focus leaves: only a changed text is an edit.
+  if (filling_ || !shown_ || field->text() == field->property("shown").toString())
     return;
   emit parametersEdited();
-  // editingFinished while the field keeps the focus means Return was pressed.
   if (field->hasFocus())
     emit viewFocusRequested();
 }
+
+void PrimitiveEditPanel::updateSegmentationFields()
+{
+  const bool growing = segmentByPrimitiveFit();
+  for (QWidget* field : {static_cast<QWidget*>(tolerance_), static_cast<QWidget*>(angle_)}) {
+    const bool visible = (field == tolerance_) == growing;
+    field->setVisible(visible);
+    if (QWidget* label = segmentation_fields_->labelForField(field))
+      label->setVisible(visible);
+  }
+}
+
+bool PrimitiveEditPanel::segmentByPrimitiveFit() const { return method_->currentIndex() == 0; }
+
+double PrimitiveEditPanel::segmentTolerance() const { return tolerance_->value(); }
 
 double PrimitiveEditPanel::angle() const { return angle_->value(); }
 
@@ -139,7 +182,7 @@ void PrimitiveEditPanel::setType(std::optional<PrimitiveType> type)
 void PrimitiveEditPanel::setSegmentInfo(int segment_count, const QString& picked)
 {
   segments_->setText(segment_count > 0 ? QString::number(segment_count)
-                                       : QString("none yet: choose an angle and press Segment"));
+                                       : QString("none yet: choose a method and press Segment"));
   picked_->setText(picked.isEmpty() ? QString("none (click a face)") : picked);
 }
 
@@ -147,13 +190,18 @@ void PrimitiveEditPanel::showPrimitive(const std::optional<Primitive>& primitive
 {
   shown_ = primitive;
   filling_ = true;
+  auto fill = [](QLineEdit* field, double value) {
+    field->setText(show_number(value));
+    field->setProperty("shown", field->text());
+    field->setCursorPosition(0);
+  };
   if (primitive) {
-    radius_->setValue(primitive->radius);
-    minor_->setValue(primitive->minor_radius);
-    half_angle_->setValue(primitive->half_angle * kDegrees);
+    fill(radius_, primitive->radius);
+    fill(minor_, primitive->minor_radius);
+    fill(half_angle_, primitive->half_angle * kDegrees);
     for (int i = 0; i < 3; ++i) {
-      axis_[i]->setValue(primitive->axis[i]);
-      origin_[i]->setValue(primitive->origin[i]);
+      fill(axis_[i], primitive->axis[i]);
+      fill(origin_[i], primitive->origin[i]);
     }
     rms_->setText(QString::number(rms, 'g', 4));
   } else {
@@ -167,7 +215,7 @@ void PrimitiveEditPanel::updateFieldVisibility()
 {
   const bool shown = shown_.has_value();
   const PrimitiveType t = shown ? shown_->type : PrimitiveType::Plane;
-  auto show = [this](QDoubleSpinBox* field, bool visible) {
+  auto show = [this](QLineEdit* field, bool visible) {
     field->setVisible(visible);
     if (QWidget* label = fields_->labelForField(field))
       label->setVisible(visible);
@@ -187,13 +235,25 @@ void PrimitiveEditPanel::updateFieldVisibility()
   apply_->setEnabled(shown);
 }
 
-Primitive PrimitiveEditPanel::editedPrimitive() const
+std::optional<Primitive> PrimitiveEditPanel::editedPrimitive(QString* error) const
 {
   Primitive p = shown_.value_or(Primitive());
-  // A field shows its value rounded to its decimals; only a field the user changed replaces the exact value.
-  auto take = [](const QDoubleSpinBox* field, double& value, double scale) {
-    if (field->value() != field->valueFromText(field->textFromValue(value * scale)))
-      value = field->value() / scale;
+  bool ok = true;
+  // A field shows its value to 10 digits; only a field whose text the user changed replaces the exact value.
+  auto take = [&](const QLineEdit* field, double& value, double scale) {
+    const QString text = field->text().trimmed();
+    if (!ok || field->text() == field->property("shown").toString())
+      return;
+    bool number = false;
+    const double typed = QLocale::c().toDouble(text, &number);
+    if (!number || !std::isfinite(typed)) {
+      ok = false;
+      const auto* label = qobject_cast<const QLabel*>(fields_->labelForField(const_cast<QLineEdit*>(field)));
+      if (error != nullptr)
+        *error = QString("%1: \"%2\" is not a number").arg(label ? label->text() : field->objectName(), text);
+      return;
+    }
+    value = typed / scale;
   };
   take(radius_, p.radius, 1.0);
   take(minor_, p.minor_radius, 1.0);
@@ -202,6 +262,8 @@ Primitive PrimitiveEditPanel::editedPrimitive() const
     take(axis_[i], p.axis[i], 1.0);
     take(origin_[i], p.origin[i], 1.0);
   }
+  if (!ok)
+    return std::nullopt;
   return p;
 }
 
@@ -217,7 +279,7 @@ void PrimitiveEditPanel::focusSizeField()
 {
   if (!shown_)
     return;
-  QDoubleSpinBox* field = origin_[2];
+  QLineEdit* field = origin_[2];
   switch (shown_->type) {
   case PrimitiveType::Sphere:
   case PrimitiveType::Cylinder:

@@ -428,7 +428,13 @@ void run(Decoder& in)
   check_segmentation(m, seg, K);
   for (int& s : listed)
     s = K > 0 ? s % K : s;
-  K = split_segments_by_plane(m, adj, seg, listed, params.plane_point, params.plane_normal);
+  // The edit tool's split: cut only where a stroke's mask allows, no piece under min_piece_faces.
+  SplitOptions split_options;
+  if (in.bit())
+    for (size_t f = 0; f < m.face.size(); ++f)
+      split_options.cuttable.push_back(char(in.bit()));
+  split_options.min_piece_faces = in.u8() % 16;
+  K = split_segments_by_plane(m, adj, seg, listed, params.plane_point, params.plane_normal, split_options);
   check_segmentation(m, seg, K);
   K = move_faces_to_new_segment(seg, selection);
   check_segmentation(m, seg, K);

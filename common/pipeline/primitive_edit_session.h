@@ -2,19 +2,24 @@
 //
 // A session is attached to one mesh. It keeps the segmentation (mirrored on the mesh by write_segment_ids
 // after every change), the picked segments, the last fit and the primitive the user edited from it, and an
-// undo stack. Every step calls common/: segment_by_normal_angle, merge_segments, split_segments_by_plane
-// (with plane_from_screen_line), and, exactly as the filters "Primitive: Fit Segment" and "Primitive: Snap
-// Segment" do, fit_segment on gather_segment_samples (the automatic type within the scan's roughness) and
-// snap_onto_primitive. Each undoable step (auto segmentation, merge, split, apply) stores a
-// snapshot: the segment ids, the recorded primitives, the picked segments and the old positions of the
-// vertices it moved; undo() restores the latest one, up to kMaxUndo steps back.
+// undo stack. Every step calls common/ as the filters do: segment_by_primitive_growing or
+// segment_by_normal_angle, merge_segments, split_segments_by_plane (with plane_from_screen_line, cutting only
+// within the stroke), fit_segment on gather_segment_samples (the automatic type within the scan's roughness)
+// and snap_onto_primitive. Each undoable step (auto segmentation, merge, split, apply) stores a snapshot:
+// the segment ids, the recorded primitives, the picked segments and the old positions of the vertices it
+// moved; undo() restores the latest one, up to kMaxUndo steps back, and the state the session started on is
+// always the last (a segmentation that changes nothing is not a step). An apply that would move vertices
+// farther than the segment is large waits for a confirmation (apply's `confirmed`).
 // Merge and split keep the recorded primitive of every segment they leave whole (under its new id).
 // Cost: attach, merge, split and undo O(F + V); fit and apply those of the fit and of snap_segments.
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 
 #include "common/base/describe_primitive.h"
+#include "common/fit/fit_residuals.h"
+#include "common/geometry/closest_point_on_primitive.h"
 #include "common/geometry/plane_from_screen_line.h"
+#include "common/geometry/project_to_window.h"
 #include "common/mesh/check_mesh_input.h"
 #include "common/mesh/count_segments.h"
 #include "common/mesh/estimate_surface_roughness.h"
@@ -27,13 +32,16 @@
 #include "common/pipeline/snap_onto_primitive.h"
 #include "common/segment/merge_segments.h"
 #include "common/segment/segment_by_normal_angle.h"
+#include "common/segment/segment_by_primitive_growing.h"
 #include "common/segment/split_segments_by_plane.h"
 
 #include <vcg/complex/complex.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <deque>
@@ -59,6 +67,9 @@ struct ApplyOutcome
   Status status;
   std::string summary;
   SnapReport report;
+  bool needs_confirmation = false;  // refused only because it moves vertices farther than the segment is large
+  double max_move = 0;              // the farthest a vertex would move (or moved)
+  double segment_size = 0;          // the picked segments' bounding box diagonal
 };
 
 template <class MeshType>
@@ -67,6 +78,8 @@ class PrimitiveEditSession
 public:
   using CoordType = typename MeshType::CoordType;
   static constexpr std::size_t kMaxUndo = 32;
+  static constexpr int kMinSplitPieceFaces = 10;      // a split leaves no smaller piece
+  static constexpr double kImplausibleFitScale = 100;  // see fit_warning
 
   // Starts editing m. Refuses (the status says why) when m cannot be edited: empty, a point cloud, or
   // NaN coordinates. The segments are read from the mesh (read_segment_ids); with use_quality false only
@@ -119,21 +132,36 @@ public:
     return faces;
   }
 
+  // Replaces the segmentation by the normal-angle method (the paper's; "Segment: Auto by Normal Angle").
   EditOutcome auto_segment(const SegmentByNormalAngleParams& params)
   {
     if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
     if (!(params.angle_deg > 0 && params.angle_deg < 180))
       return EditOutcome::refused("the angle must be between 0 and 180 degrees");
-    push_snapshot(take_snapshot("segmentation"));
     std::vector<int> labels;
     const int k = segment_by_normal_angle(*mesh_, adjacency_, params, labels);
-    store(labels, SegmentPrimitives());
-    picked_.clear();
-    clear_fit();
     char angle[32];
     std::snprintf(angle, sizeof angle, "%.3g", params.angle_deg);
-    return EditOutcome::done(std::to_string(k) + " segments at " + angle + " degrees");
+    return replace_segmentation(std::move(labels), std::to_string(k) + " segments at " + angle + " degrees");
+  }
+
+  // Replaces the segmentation by primitive growing, for scans ("Segment: Auto by Primitive Fit", the same call).
+  EditOutcome auto_segment(const SegmentByPrimitiveGrowingParams& params, const Progress& progress = {})
+  {
+    if (const EditOutcome bad = check_mesh(); !bad.status)
+      return bad;
+    if (!std::isfinite(params.tolerance) || params.tolerance < 0)
+      return EditOutcome::refused("the tolerance must be 0 (automatic) or positive");
+    if (!(params.normal_angle_deg > 0 && params.normal_angle_deg < 90))
+      return EditOutcome::refused("the normal angle must be between 0 and 90 degrees");
+    std::vector<int> labels;
+    SegmentByPrimitiveGrowingReport report;
+    const int k = segment_by_primitive_growing(*mesh_, adjacency_, params, labels, &report, progress);
+    char tolerance[64];
+    std::snprintf(tolerance, sizeof tolerance, "%.4g (roughness %.4g)", report.tolerance, report.roughness);
+    return replace_segmentation(std::move(labels), std::to_string(k) + " segments by primitive fit, tolerance " +
+                                                       tolerance);
   }
 
   // Picks the segment of a face: alone, or (additive) added to / removed from the picked ones. A face with no
@@ -181,8 +209,10 @@ public:
                              std::to_string(picked_.front()) + "; " + std::to_string(after) + " segments");
   }
 
-  // Cuts the picked segments by a plane; every connected piece on each side becomes a segment.
-  EditOutcome split_picked_by_plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
+  // Cuts the picked segments by a plane (where options.cuttable allows); every connected piece becomes a
+  // segment, pieces under options.min_piece_faces join a neighbour (split_segments_by_plane.h).
+  EditOutcome split_picked_by_plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                                    const SplitOptions& options = {})
   {
     if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
@@ -192,7 +222,7 @@ public:
       return EditOutcome::refused("the cutting plane is not valid");
     std::vector<int> labels = labels_;
     const int before = segment_count();
-    const int after = split_segments_by_plane(*mesh_, adjacency_, labels, picked_, point, normal);
+    const int after = split_segments_by_plane(*mesh_, adjacency_, labels, picked_, point, normal, options);
     if (after == before)
       return EditOutcome::refused("the line does not cut the picked segment (draw it across the segment)");
     push_snapshot(take_snapshot("split"));
@@ -205,7 +235,9 @@ public:
                              " segments");
   }
 
-  // The same, with the plane through a line drawn on screen and the view direction (see plane_from_screen_line).
+  // The same along a stroke drawn on screen: the plane through the stroke and the view direction (see
+  // plane_from_screen_line), cutting only faces that appear within the stroke's extent (a stroke in empty
+  // space or across half a segment cuts nothing off), leaving no piece under kMinSplitPieceFaces faces.
   EditOutcome split_picked_by_screen_line(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                           const Eigen::Matrix4d& modelview, const Eigen::Matrix4d& projection,
                                           const Eigen::Vector4d& viewport)
@@ -213,7 +245,24 @@ public:
     const ScreenLinePlane plane = plane_from_screen_line(a, b, modelview, projection, viewport);
     if (!plane.status)
       return EditOutcome::refused(plane.status.error);
-    return split_picked_by_plane(plane.point, plane.normal);
+    if (const EditOutcome bad = check_mesh(); !bad.status)
+      return bad;
+    SplitOptions options;
+    options.min_piece_faces = kMinSplitPieceFaces;
+    options.cuttable.assign(mesh_->face.size(), 0);
+    const Eigen::Matrix4d clip_from_object = projection * modelview;
+    const Eigen::Vector2d along = b - a;
+    const double margin = 2.0 / along.norm();  // pixels of slack at the stroke's ends
+    for (const int f : picked_faces()) {
+      const auto& face = mesh_->face[std::size_t(f)];
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+        centroid += Eigen::Vector3d(double(face.cP(k)[0]), double(face.cP(k)[1]), double(face.cP(k)[2])) / 3.0;
+      const std::optional<Eigen::Vector2d> q = project_to_window(centroid, clip_from_object, viewport);
+      const double t = q ? (*q - a).dot(along) / along.squaredNorm() : -1.0;
+      options.cuttable[std::size_t(f)] = t >= -margin && t <= 1.0 + margin;
+    }
+    return split_picked_by_plane(plane.point, plane.normal, options);
   }
 
   // Fits a primitive of the given type (std::nullopt: the type that explains the points best) to the union
@@ -241,12 +290,40 @@ public:
     if (out.status) {
       fit_ = out;
       edited_ = out.primitive;
+      edited_rms_ = out.rms;
       fit_points_ = samples.points;
     }
     return out;
   }
   const std::optional<FitResult>& last_fit() const { return fit_; }
+  // A warning when the last fit is far larger than the picked segments (a radius or a cone's apex distance
+  // over kImplausibleFitScale times their size: a nearly flat or straight patch), else empty.
+  std::string fit_warning() const
+  {
+    if (!fit_ || fit_points_.rows() == 0)
+      return {};
+    const Eigen::Vector3d low = fit_points_.colwise().minCoeff().transpose();
+    const Eigen::Vector3d high = fit_points_.colwise().maxCoeff().transpose();
+    const double size = (high - low).norm();
+    const Primitive& p = fit_->primitive;
+    const double scale = p.type == PrimitiveType::Cone ? (p.origin - 0.5 * (low + high)).norm()
+                         : p.type == PrimitiveType::Plane ? 0.0
+                                                          : p.radius;
+    if (!(scale > kImplausibleFitScale * size))
+      return {};
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "the fitted %s %.3g away, while the picked segments are %.3g across: they are nearly flat or "
+                  "straight, and a plane or another type fits them better",
+                  p.type == PrimitiveType::Cone     ? "cone's apex lies"
+                  : p.type == PrimitiveType::Sphere ? "sphere's centre lies"
+                                                    : "axis lies",
+                  scale, size);
+    return text;
+  }
   const std::optional<Primitive>& edited() const { return edited_; }
+  // The RMS distance of the fitted points from the edited primitive (the fit's RMS until an edit).
+  double edited_rms() const { return edited_rms_; }
   // Points of the last fit (to draw the primitive where the segment is).
   const Eigen::MatrixX3d& fit_points() const { return fit_points_; }
 
@@ -263,12 +340,15 @@ public:
       return EditOutcome::refused("not a valid " + std::string(primitive_type_name(p.type)) + ": " +
                                   describe_primitive(p));
     edited_ = p;
+    edited_rms_ = fit_residuals(p, fit_points_, Eigen::VectorXd()).rms;
     return EditOutcome::done(describe_primitive(p));
   }
 
   // Moves the picked segments onto the edited primitive, with sharp edges against the segments snapped
   // before (recorded on the mesh), and records the primitive for them. Normals and bounding box are updated.
-  ApplyOutcome apply(bool sharp_edges = true)
+  // Unless confirmed, refuses (needs_confirmation, the mesh untouched) when a vertex would move farther than
+  // the picked segments' bounding box diagonal: an edited value or a fit far off the segment's size.
+  ApplyOutcome apply(bool sharp_edges = true, bool confirmed = false)
   {
     ApplyOutcome out;
     if (const EditOutcome bad = check_mesh(); !bad.status) {
@@ -277,6 +357,16 @@ public:
     }
     if (!edited_ || picked_.empty()) {
       out.status = Status::failure("pick a segment and fit a primitive first");
+      return out;
+    }
+    measure_move(out);
+    if (!confirmed && out.max_move > out.segment_size) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "this would move vertices by up to %.4g, more than the segment's size (%.4g): confirm to apply",
+                    out.max_move, out.segment_size);
+      out.status = Status::failure(text);
+      out.needs_confirmation = true;
       return out;
     }
     Snapshot snapshot = take_snapshot("apply");
@@ -334,6 +424,32 @@ private:
   };
 
   // The mesh may be changed behind the session's back (another filter while the tool is on).
+  // The farthest a picked vertex is from the edited primitive, and the picked segments' size.
+  void measure_move(ApplyOutcome& out) const
+  {
+    Eigen::AlignedBox3d box;
+    for (const int f : picked_faces())
+      for (int k = 0; k < 3; ++k) {
+        const auto& p = mesh_->face[std::size_t(f)].cP(k);
+        const Eigen::Vector3d q(static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]));
+        box.extend(q);
+        out.max_move = std::max(out.max_move, std::abs(signed_distance_to_primitive(*edited_, q)));
+      }
+    out.segment_size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+  }
+
+  // A segmentation that gives the segments the mesh has already is not a step: the history keeps real ones.
+  EditOutcome replace_segmentation(std::vector<int> labels, const std::string& summary)
+  {
+    if (labels == labels_)
+      return EditOutcome::done(summary + "; the segments are unchanged, no undo step added");
+    push_snapshot(take_snapshot("segmentation"));
+    store(labels, SegmentPrimitives());
+    picked_.clear();
+    clear_fit();
+    return EditOutcome::done(summary);
+  }
+
   EditOutcome check_mesh() const
   {
     if (mesh_ == nullptr)
@@ -347,6 +463,7 @@ private:
   {
     fit_.reset();
     edited_.reset();
+    edited_rms_ = 0;
     fit_points_.resize(0, 3);
   }
 
@@ -376,8 +493,9 @@ private:
   void push_snapshot(Snapshot s)
   {
     undo_.push_back(std::move(s));
+    // The oldest snapshot is the state the tool started on: always reachable, the second oldest goes.
     if (undo_.size() > kMaxUndo)
-      undo_.pop_front();
+      undo_.erase(undo_.begin() + 1);
   }
 
   // The recorded primitives under the new ids: a segment keeps its primitive when it is unchanged, i.e. its
@@ -439,6 +557,7 @@ private:
   std::optional<FitResult> fit_;
   std::optional<Primitive> edited_;
   Eigen::MatrixX3d fit_points_ = Eigen::MatrixX3d(0, 3);
+  double edited_rms_ = 0;
   std::deque<Snapshot> undo_;
   std::optional<double> roughness_;
 };

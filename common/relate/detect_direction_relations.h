@@ -11,8 +11,9 @@
 //         direction information, so that a strip too narrow to hold its own tilt follows the part, while a
 //         large face at a deliberate angle, which the tilt would cost far more than its roughness, does not.
 // Method: 1. Classes: pairs of directions closest to parallel first, two classes merge when every member
-//            passes the test against the merged class's direction (the information-weighted mean, by
-//            Gauss-Newton), so that errors cannot creep along a chain of nearly parallel pairs.
+//            passes the test against the merged class's direction (the mean weighted by each member's
+//            information over its allowed cost rise, by Gauss-Newton: an exact face is not turned, a rough
+//            one follows), so that errors cannot creep along a chain of nearly parallel pairs.
 //         2. Frame: the strongest class (most direction information) and the strongest one perpendicular to
 //            it within the angle span it; every class within the angle of an axis or a diagonal is assigned
 //            to it, the frame's rotation is fitted to all assigned members (Gauss-Newton on 3 angles), and
@@ -29,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <vector>
@@ -63,9 +65,11 @@ inline bool passes(const FitInformation& info, const Eigen::Vector3d& dir, const
   return angle <= max_angle && cost <= max_cost_increase * info.cost + floor;
 }
 
-// The direction that turns the members least, in their information metric (Gauss-Newton from `start`).
+// The direction that turns the members least, each in its information metric divided by the cost it may
+// take (`allowance`, per segment), so that a member fitted exactly is not turned and a rough one follows
+// (Gauss-Newton from `start`).
 inline Eigen::Vector3d mean_direction(const std::vector<Member>& members, const std::vector<FitInformation>& info,
-                                      Eigen::Vector3d d)
+                                      const std::vector<double>& allowance, Eigen::Vector3d d)
 {
   for (int it = 0; it < 4; ++it) {
     const Eigen::Vector3d f1 = any_orthogonal(d), f2 = d.cross(f1);
@@ -77,8 +81,9 @@ inline Eigen::Vector3d mean_direction(const std::vector<Member>& members, const 
       P << fi.e1.dot(f1), fi.e1.dot(f2), fi.e2.dot(f1), fi.e2.dot(f2);
       const Eigen::Vector3d dev = d - m.dir;
       const Eigen::Vector2d phi(fi.e1.dot(dev), fi.e2.dot(dev));
-      A += P.transpose() * fi.direction * P;
-      b += P.transpose() * fi.direction * phi;
+      const double scale = 1.0 / allowance[std::size_t(m.segment)];
+      A += scale * P.transpose() * fi.direction * P;
+      b += scale * P.transpose() * fi.direction * phi;
     }
     const double trace = A.trace();
     if (!(trace > 0))
@@ -119,6 +124,10 @@ inline std::vector<Relation> detect_direction_relations(const std::vector<const 
   // Round-off of exact data: a relation that holds to 1e-7 of the part's size always passes.
   auto floor_of = [&](int s) { return 1e-14 * length * length * info[std::size_t(s)].weight; };
   auto axis = [&](int s) { return primitives[std::size_t(s)]->axis; };
+  std::vector<double> allowance(primitives.size(), 1.0);
+  for (int s : directed)
+    allowance[std::size_t(s)] =
+        std::max(max_cost_increase * info[std::size_t(s)].cost + floor_of(s), std::numeric_limits<double>::min());
 
   // 1. Classes of parallel directions.
   std::vector<int> class_of(primitives.size(), -1);
@@ -152,7 +161,7 @@ inline std::vector<Relation> detect_direction_relations(const std::vector<const 
     const double flip = class_dir[std::size_t(x)].dot(class_dir[std::size_t(y)]) < 0 ? -1.0 : 1.0;
     for (const Member& m : members[std::size_t(y)])
       both.push_back({m.segment, flip * m.dir});
-    const Eigen::Vector3d d = mean_direction(both, info, class_dir[std::size_t(x)]);
+    const Eigen::Vector3d d = mean_direction(both, info, allowance, class_dir[std::size_t(x)]);
     bool ok = true;
     for (const Member& m : both)
       ok = ok && passes(info[std::size_t(m.segment)], m.dir, d, max_angle, max_cost_increase, floor_of(m.segment));

@@ -16,7 +16,8 @@
 //            fillets (detect_position_relations.h) among the refitted primitives, refit with all relations;
 //            3. the check. Every segment is represented by at most kRelateSamples of its points (evenly
 //            strided, weights scaled to keep its total), weighted by its own fit's robust (Tukey) weights, so
-//            that outliers at its border do not pull the joint fit either.
+//            that outliers at its border do not pull the joint fit either, and divided by its own fit's
+//            mean squared residual, so that the joint fit trusts each segment as far as its noise allows.
 // Cost:   O(N) to take the samples, then the detections and up to 6 refits on at most kRelateSamples points a
 //         segment.
 #ifndef PRIMITIVE_EDIT_RELATE_PRIMITIVES_H
@@ -24,6 +25,7 @@
 
 #include "common/base/constants.h"
 #include "common/base/status.h"
+#include "common/fit/fit_residuals.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_contacts.h"
 #include "common/relate/detect_direction_relations.h"
@@ -153,6 +155,15 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
       start[std::size_t(s)] = &segments[std::size_t(s)].primitive;
   }
   const double length = part_size(segments);
+  // Each segment's residuals in units of its own noise (maximum likelihood with a noise per segment): in the
+  // joint refit an exact face stays and a rough one follows. The checks compare each segment's cost with its
+  // own, so they do not change.
+  for (int s = 0; s < count; ++s)
+    if (start[std::size_t(s)]) {
+      RelatedSegment& r = segments[std::size_t(s)];
+      const double rms = fit_residuals(r.primitive, r.points, r.weights).rms;
+      r.weights /= rms * rms + 1e-14 * length * length;
+    }
   out.distance = options.distance > 0 ? options.distance : noise > 0 ? 3.0 * noise : 0.01 * length;
   const double angle = radians_from_degrees(options.angle_deg);
 

@@ -1,12 +1,16 @@
 // split_segments_by_plane.h: the paper's manual "split mesh segment": a cut by a plane (in the GUI, the plane
 // through the line the user draws and the viewing direction).
 //
-// Input:  the mesh, its FaceAdjacency, segment_of_face, the ids of the segments to split, and the plane as a
-//         point and a normal (normalised here; a zero or non-finite plane leaves the segments as they are).
+// Input:  the mesh, its FaceAdjacency, segment_of_face, the ids of the segments to split, the plane as a
+//         point and a normal (normalised here; a zero or non-finite plane leaves the segments as they are),
+//         and SplitOptions: where the plane may cut (a per-face mask, for the stretch of the drawn stroke;
+//         empty: everywhere) and the smallest piece to keep.
 // Output: each face of a listed segment is classified by the side of its centroid (on the plane counts as the
-//         positive side; a NaN centroid as the negative side); every connected piece of faces of the same
-//         former segment on the same side becomes its own segment. Other segments are untouched. Ids are
-//         compacted to 0..K-1. Returns K.
+//         positive side; a NaN centroid as the negative side); the segment is cut between neighbouring faces
+//         on opposite sides when both may be cut, and every connected piece becomes its own segment. A piece
+//         of fewer than min_piece_faces faces joins the neighbouring piece of the same former segment it
+//         shares most edges with (slivers where the plane grazes the surface are not segments). Other
+//         segments are untouched. Ids are compacted to 0..K-1. Returns K.
 // Complexity: O(F + adjacency size + L log L) for L listed ids; iterative flood fill.
 #ifndef PRIMITIVE_EDIT_SPLIT_SEGMENTS_BY_PLANE_H
 #define PRIMITIVE_EDIT_SPLIT_SEGMENTS_BY_PLANE_H
@@ -20,14 +24,77 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace primitive_edit {
 
+struct SplitOptions
+{
+  std::vector<char> cuttable;  // per face: the plane may cut next to it; empty: everywhere
+  int min_piece_faces = 1;     // smaller pieces join a neighbouring piece of their former segment
+};
+
+namespace split_detail {
+
+// Joins every piece (id >= first_piece) of fewer than min_faces faces to the neighbouring piece of the same
+// former segment it shares most edges with; a piece without such a neighbour stays. O(F + adjacency).
+inline void absorb_small_pieces(const FaceAdjacency& adj, const std::vector<int>& former, int first_piece,
+                                int min_faces, std::vector<int>& segment_of_face)
+{
+  if (min_faces <= 1 || segment_of_face.empty())
+    return;
+  const int end = *std::max_element(segment_of_face.begin(), segment_of_face.end()) + 1;
+  if (end <= first_piece)
+    return;
+  const auto piece_count = std::size_t(end - first_piece);
+  std::vector<int> size(piece_count, 0);
+  for (const int s : segment_of_face)
+    if (s >= first_piece)
+      ++size[std::size_t(s - first_piece)];
+  std::map<std::pair<int, int>, int> shared;  // (small piece, neighbouring piece) -> edges
+  for (std::size_t f = 0; f < segment_of_face.size(); ++f) {
+    const int piece = segment_of_face[f];
+    if (piece < first_piece || size[std::size_t(piece - first_piece)] >= min_faces)
+      continue;
+    for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k) {
+      const std::size_t g = std::size_t(adj.neighbour[std::size_t(k)]);
+      if (segment_of_face[g] >= first_piece && segment_of_face[g] != piece && former[g] == former[f])
+        ++shared[{piece, segment_of_face[g]}];
+    }
+  }
+  std::vector<int> into(piece_count);
+  for (std::size_t i = 0; i < piece_count; ++i)
+    into[i] = first_piece + int(i);
+  auto find = [&](int piece) {
+    while (into[std::size_t(piece - first_piece)] != piece)
+      piece = into[std::size_t(piece - first_piece)];
+    return piece;
+  };
+  for (auto it = shared.begin(); it != shared.end();) {
+    const int piece = it->first.first;
+    int best = -1, best_edges = 0;
+    for (; it != shared.end() && it->first.first == piece; ++it)
+      if (it->second > best_edges) {
+        best = it->first.second;
+        best_edges = it->second;
+      }
+    const int root = find(best);
+    if (root != piece)
+      into[std::size_t(piece - first_piece)] = root;
+  }
+  for (int& s : segment_of_face)
+    if (s >= first_piece)
+      s = find(s);
+}
+
+} // namespace split_detail
+
 template <class MeshType>
 int split_segments_by_plane(const MeshType& m, const FaceAdjacency& adj, std::vector<int>& segment_of_face,
                             const std::vector<int>& segments, const Eigen::Vector3d& point,
-                            const Eigen::Vector3d& normal)
+                            const Eigen::Vector3d& normal, const SplitOptions& options = {})
 {
   const double length = normal.norm();
   if (segment_of_face.size() != m.face.size() || adj.face_count() != int(m.face.size()) || !point.allFinite() ||
@@ -59,7 +126,12 @@ int split_segments_by_plane(const MeshType& m, const FaceAdjacency& adj, std::ve
     side[f] = (centroid - point).dot(unit) >= 0.0 ? 1 : 0;
     segment_of_face[f] = -1;
   }
-  int next = compact_segment_ids(segment_of_face);
+  const int first_piece = compact_segment_ids(segment_of_face);
+  int next = first_piece;
+  const bool everywhere = options.cuttable.size() != face_count;
+  auto joined = [&](std::size_t f, std::size_t g) {
+    return side[g] == side[f] || (!everywhere && (!options.cuttable[f] || !options.cuttable[g]));
+  };
 
   std::vector<int> stack;
   for (std::size_t seed = 0; seed < face_count; ++seed) {
@@ -73,13 +145,14 @@ int split_segments_by_plane(const MeshType& m, const FaceAdjacency& adj, std::ve
       stack.pop_back();
       for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k) {
         const std::size_t g = std::size_t(adj.neighbour[std::size_t(k)]);
-        if (side[g] == side[f] && former[g] == former[f] && segment_of_face[g] < 0) {
+        if (side[g] >= 0 && joined(f, g) && former[g] == former[f] && segment_of_face[g] < 0) {
           segment_of_face[g] = id;
           stack.push_back(int(g));
         }
       }
     }
   }
+  split_detail::absorb_small_pieces(adj, former, first_piece, options.min_piece_faces, segment_of_face);
   return compact_segment_ids(segment_of_face);
 }
 

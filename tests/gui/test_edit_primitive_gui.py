@@ -4,8 +4,12 @@ A closed cylinder (axis along x, radius 2) is opened; the tool is started (Ctrl+
 segmented (S), the side is picked by a click and split by a Ctrl+drag across it, the two halves are picked
 (click, Shift+click) and merged (M), a cylinder is fitted (3, F), its radius set to 2.5 (R, typing, Return),
 applied (Enter), undone (Ctrl+Z) - the mesh is exported and must be back at radius 2 - and applied again
-(Enter) - exported again, at radius 2.5. The exported PLY files are checked: geometry and segment ids (face
-quality). Screenshots of every step are kept in the work directory.
+(Enter) - exported again, at radius 2.5. Then what a user must not be surprised by: the view does not move
+sideways across fit and apply (the panel's width is fixed); a Ctrl+drag in empty space cuts nothing; a radius
+of 1e4 typed in scientific notation is taken, and Apply then warns and asks instead of throwing the side
+10 km away (Escape cancels, nothing moves); S pressed 40 times adds one undo step at most, and undoing to the
+end restores the mesh as it was opened (geometry and segments). The exported PLY files are checked: geometry
+and segment ids (face quality). Screenshots of every step are kept in the work directory.
 
 Usage: python3 test_edit_primitive_gui.py --meshlab PATH --workdir DIR
 Needs Xvfb, xdotool and ImageMagick's import. Prints "N passed, N failed"; exits non-zero on failure.
@@ -24,7 +28,7 @@ from meshlab_script import read_ply, write_ply  # noqa: E402
 
 RADIUS, LENGTH, AROUND, RINGS = 2.0, 6.0, 48, 12
 NEW_RADIUS = 2.5
-DEADLINE = time.time() + 170
+DEADLINE = time.time() + 300
 
 passed = 0
 failed = 0
@@ -175,7 +179,7 @@ class Session:
         """Screenshot as PNG (artifact) and returns the pixels as (width, height, rgb bytes)."""
         self.shot_index += 1
         ppm = os.path.join(self.workdir, "shot.ppm")
-        subprocess.run(["import", "-window", "root", ppm], env=self.env, check=True, timeout=30)
+        subprocess.run(["import", "-window", "root", "-depth", "8", ppm], env=self.env, check=True, timeout=30)
         subprocess.run(["convert", ppm, os.path.join(self.workdir, "%02d_%s.png" % (self.shot_index, name))],
                        check=True, timeout=30)
         with open(ppm, "rb") as f:
@@ -249,6 +253,23 @@ def mesh_box(before, after):
     return c0 * step, r0 * step, c1 * step, r1 * step
 
 
+def panel_right(shot, y=975):
+    """The right edge of the tool's panel (docked on the left) on row y, below its widgets: walking right from
+    the window's left border, the first column whose colour differs from the panel's background."""
+    w, h, data = shot
+    size = len(data) // (w * h * 3)  # bytes per sample: import writes 8 or 16 bit PPM
+
+    def rgb(px):
+        i = size * 3 * (y * w + px)
+        return data[i], data[i + size], data[i + 2 * size]
+
+    x = 3
+    background = rgb(x)
+    while x + 1 < w and sum(abs(a - b) for a, b in zip(rgb(x + 1), background)) < 30:
+        x += 1
+    return x
+
+
 def check_export(path, ranges, radius, label):
     side, left, right = ranges
     if not check(os.path.exists(path), "%s: exported %s" % (label, os.path.basename(path))):
@@ -273,6 +294,20 @@ def check_export(path, ranges, radius, label):
           "%s: length kept (x from %.3f to %.3f)" % (label, min(xs), max(xs)))
 
 
+def check_start(path, ranges):
+    """After undoing everything: the mesh as opened, radius 2 and no segmentation (one value in face quality)."""
+    side = ranges[0]
+    if not check(os.path.exists(path), "undone to the end: exported %s" % os.path.basename(path)):
+        return
+    vertices, faces, face_props, _ = read_ply(path)
+    quality = face_props.get("quality") or []
+    check(len(set(int(q) for q in quality)) == 1, "undone to the end: no segments, as opened (%d ids)"
+          % len(set(int(q) for q in quality)))
+    side_vertices = {i for f in range(*side) for i in faces[f]}
+    worst = max(abs(math.hypot(vertices[i][1], vertices[i][2]) - RADIUS) for i in side_vertices)
+    check(worst < 0.005, "undone to the end: side back at radius %g as opened (worst %.4g)" % (RADIUS, worst))
+
+
 def check_log(path):
     """MeshLab echoes its log on stdout ("LOG: <level> <text>"): every step must have been done, in order."""
     with open(path, errors="replace") as f:
@@ -294,7 +329,21 @@ def check_log(path):
             at = found + 1
     edited = [l for l in lines if "edited primitive: Cylinder" in l]
     check(any("radius %g" % NEW_RADIUS in l for l in edited), "log: radius set to %g" % NEW_RADIUS)
-    check(not any(l.startswith("LOG: 1 ") for l in lines), "log: no warnings from the tool")
+    check(not any(l.startswith("LOG: 1 ") for l in lines[:at]), "log: no warnings from the tool up to here")
+    check(sum(1 for l in lines if "edited primitive: Cylinder" in l and "radius %g" % NEW_RADIUS in l) == 1,
+          "log: one line per edit (Return and the focus leaving the field do not both log)")
+    surprises = [("stroke in empty space cuts nothing", "split: the line does not cut"),
+                 ("1e4 typed is taken", "edited primitive: Cylinder"),
+                 ("apply warns before moving vertices 1e4 away", "confirm to apply"),
+                 ("the warning's Cancel leaves the mesh", "cancelled; the mesh is unchanged"),
+                 ("segmented again", "automatic segmentation"),
+                 ("repeated segmentation adds no step", "no undo step added"),
+                 ("undone to the end", "undo: nothing to undo")]
+    for name, text in surprises:
+        found = next((i for i in range(at, len(lines)) if text in lines[i]), None)
+        if check(found is not None, "log: %s (%r)" % (name, text)):
+            at = found + 1
+    check(any("radius 10000" in l for l in lines if "edited primitive: Cylinder" in l), "log: radius 1e4 taken")
 
 
 def main():
@@ -318,12 +367,21 @@ def main():
     try:
         s.start(mesh)
         s.shot("opened")
+        # Zoom out two wheel steps (before the tool, which takes the wheel) so that the whole cylinder is in
+        # the view beside the docks.
+        s.xdo("mousemove", "640", "500")
+        s.xdo("click", "--repeat", "2", "--delay", "300", "4")
+        time.sleep(1.0)
         s.key("ctrl+shift+p", pause=2.0)
         # Without a window manager the window shrinks when the tool's panel docks: restore its size.
         s.xdo("windowmove", s.window, "0", "0")
         s.xdo("windowsize", s.window, "1280", "1024")
         time.sleep(2.0)
         before = s.shot("tool_started")
+        # This clean cylinder is the normal-angle method's case (the default, primitive fit, is for scans):
+        # Alt+M focuses the method, Down picks "Normal angle", and the keys go back to the view.
+        s.key("alt+m", "Down", pause=1.0)
+        s.shot("normal_angle_chosen")
         s.key("s", pause=2.0)
         after = s.shot("segmented")
         box = mesh_box(before, after)
@@ -349,7 +407,11 @@ def main():
         s.key("Return", pause=1.0)
         s.shot("radius_edited")
         s.key("Return", pause=3.0)
-        s.shot("applied")
+        applied_shot = s.shot("applied")
+        edge = panel_right(before)
+        check(100 < edge < 600 and panel_right(applied_shot) == edge,
+              "the panel's edge stays at x = %d (now %d) across fit and apply: the view does not move"
+              % (edge, panel_right(applied_shot)))
         s.key("ctrl+z", pause=3.0)
         s.shot("undone")
         # Undo keeps the edited cylinder: Enter applies it again.
@@ -357,6 +419,27 @@ def main():
         s.shot("applied_again")
         applied = os.path.join(args.workdir, "applied.ply")
         check(s.export(applied), "export after applying again")
+        # With the side picked, a stroke in empty space below the mesh, on the line of the split that cut the
+        # side in two before: the plane through it crosses the side, the stroke does not.
+        s.click(cx, cy)
+        s.drag(cx, y1 + 40, cx + 1, y1 + 120, "ctrl")
+        s.shot("stroke_in_empty_space")
+        # Radius 1e4 on the side: taken, then Apply warns and asks; Escape cancels.
+        s.key("3", "f", pause=3.0)
+        s.key("r", pause=0.5)
+        s.xdo("type", "--delay", "60", "1e4")
+        time.sleep(0.3)
+        s.key("Return", pause=1.0)
+        s.key("Return", pause=2.0)
+        s.shot("apply_warning")
+        s.key("Escape", pause=1.5, focus=False)
+        s.shot("apply_cancelled")
+        # S 40 times, then undo to the end.
+        s.key(*(["s"] * 40), pause=3.0)
+        s.key(*(["ctrl+z"] * 45), pause=4.0)
+        s.shot("undone_to_the_end")
+        start = os.path.join(args.workdir, "start.ply")
+        check(s.export(start), "export after undoing to the end")
         s.shot("final")
         if time.time() > DEADLINE:
             check(False, "finished within the time limit")
@@ -367,6 +450,7 @@ def main():
 
     check_log(os.path.join(args.workdir, "meshlab.log"))
     check_export(os.path.join(args.workdir, "applied.ply"), ranges, NEW_RADIUS, "after apply, undo, apply")
+    check_start(os.path.join(args.workdir, "start.ply"), ranges)
     print("%d passed, %d failed" % (passed, failed))
     return 0 if failed == 0 else 1
 

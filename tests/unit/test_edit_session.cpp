@@ -341,4 +341,118 @@ TYPED_TEST(EditSessionTest, AttachRefusesEmptyMeshesAndPointClouds)
   EXPECT_FALSE(s.auto_segment(SegmentByNormalAngleParams()).status.ok());
 }
 
+TYPED_TEST(EditSessionTest, RepeatedSegmentationAddsNoStepAndTheStartStaysReachable)
+{
+  auto& s = this->session;
+  auto& m = this->mesh;
+  // The state the tool started on: no segments (SetUp segmented once after attaching).
+  const std::vector<int> start(m.face.size(), -1);
+  ASSERT_EQ(s.undo_depth(), 1u);
+  SegmentByNormalAngleParams same;
+  same.angle_deg = 30;
+  for (int i = 0; i < 40; ++i) {
+    const EditOutcome again = s.auto_segment(same);
+    ASSERT_TRUE(again.status.ok()) << again.status.error;
+    EXPECT_NE(again.summary.find("unchanged"), std::string::npos);
+  }
+  EXPECT_EQ(s.undo_depth(), 1u);
+
+  // More steps than the history holds, each a real change: split the side, merge it back, ...
+  const Camera camera;
+  for (std::size_t step = 0; step < PrimitiveEditSession<TypeParam>::kMaxUndo + 8; ++step) {
+    if (step % 2 == 0) {
+      ASSERT_TRUE(s.pick(0, false));
+      ASSERT_TRUE(s.split_picked_by_screen_line({50, 430}, {750, 430}, camera.modelview, camera.projection,
+                                                camera.viewport).status.ok());
+    } else {
+      int other = -1;
+      for (int f = 0; f < kSideFaces && other < 0; ++f)
+        if (s.segment_of(f) != s.segment_of(0))
+          other = f;
+      ASSERT_TRUE(s.pick(0, false));
+      ASSERT_TRUE(s.pick(other, true));
+      ASSERT_TRUE(s.merge_picked().status.ok());
+    }
+  }
+  EXPECT_EQ(s.undo_depth(), PrimitiveEditSession<TypeParam>::kMaxUndo);
+  while (s.can_undo())
+    ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.segment_of_face(), start);
+}
+
+TYPED_TEST(EditSessionTest, PrimitiveFitSegmentationIsTheFiltersAndUndoable)
+{
+  auto& s = this->session;
+  const std::vector<int> by_angle = s.segment_of_face();
+  SegmentByPrimitiveGrowingParams params;
+  const EditOutcome grown = s.auto_segment(params);
+  ASSERT_TRUE(grown.status.ok()) << grown.status.error;
+  std::vector<int> filter;
+  segment_by_primitive_growing(this->mesh, params, filter);
+  EXPECT_EQ(s.segment_of_face(), filter);
+  SegmentByPrimitiveGrowingParams bad;
+  bad.normal_angle_deg = 95;
+  EXPECT_FALSE(s.auto_segment(bad).status.ok());
+  EXPECT_EQ(s.segment_of_face(), filter);
+  if (by_angle != filter) {
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(s.segment_of_face(), by_angle);
+  }
+}
+
+TYPED_TEST(EditSessionTest, StrokeCutsOnlyWhereItCrossesTheSegment)
+{
+  auto& s = this->session;
+  const Camera camera;
+  const std::vector<int> before = s.segment_of_face();
+  ASSERT_TRUE(s.pick(0, false));
+  // A stroke in empty space beside the cylinder (which spans about x 350-450 on screen): the infinite plane
+  // through it would cut the side, the stroke does not.
+  EXPECT_FALSE(s.split_picked_by_screen_line({600, 430}, {750, 430}, camera.modelview, camera.projection,
+                                             camera.viewport).status.ok());
+  EXPECT_EQ(s.segment_of_face(), before);
+  // A stroke across half of the side only: the side stays connected around its other half.
+  EXPECT_FALSE(s.split_picked_by_screen_line({400, 430}, {750, 430}, camera.modelview, camera.projection,
+                                             camera.viewport).status.ok());
+  EXPECT_EQ(s.segment_of_face(), before);
+  // Across the whole side: two pieces, none a sliver.
+  const EditOutcome split = s.split_picked_by_screen_line({300, 430}, {500, 430}, camera.modelview,
+                                                          camera.projection, camera.viewport);
+  ASSERT_TRUE(split.status.ok()) << split.status.error;
+  EXPECT_EQ(s.segment_count(), 4);
+  std::vector<int> size(4, 0);
+  for (int id : s.segment_of_face())
+    ++size[std::size_t(id)];
+  for (int n : size)
+    EXPECT_GE(n, PrimitiveEditSession<TypeParam>::kMinSplitPieceFaces);
+}
+
+TYPED_TEST(EditSessionTest, ApplyFarBeyondTheSegmentWaitsForConfirmation)
+{
+  auto& s = this->session;
+  auto& m = this->mesh;
+  ASSERT_TRUE(s.pick(kFirstTopFace, false));
+  ASSERT_TRUE(s.fit(PrimitiveType::Plane).status.ok());
+  EXPECT_TRUE(s.fit_warning().empty());
+  Primitive far = *s.edited();
+  far.origin += 1000.0 * far.axis;  // a typo: the top plane 1000 away from a part 4 high
+  ASSERT_TRUE(s.set_edited(far).status.ok());
+  EXPECT_NEAR(s.edited_rms(), 1000.0, 1e-2);
+  std::vector<typename TypeParam::CoordType> before;
+  for (const auto& v : m.vert)
+    before.push_back(v.cP());
+  const std::size_t depth = s.undo_depth();
+  const ApplyOutcome refused = s.apply();
+  EXPECT_FALSE(refused.status.ok());
+  EXPECT_TRUE(refused.needs_confirmation);
+  EXPECT_NEAR(refused.max_move, 1000.0, 1e-2);
+  EXPECT_NEAR(refused.segment_size, 2 * kRadius * std::sqrt(2.0), 0.05);
+  EXPECT_EQ(s.undo_depth(), depth);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    ASSERT_EQ(m.vert[v].cP(), before[v]);
+  const ApplyOutcome confirmed = s.apply(true, true);
+  ASSERT_TRUE(confirmed.status.ok()) << confirmed.status.error;
+  EXPECT_NEAR(m.vert[m.vert.size() - 1].cP()[2], kHeight + 1000.0, 1e-3);
+}
+
 } // namespace

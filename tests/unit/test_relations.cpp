@@ -217,9 +217,11 @@ TEST(Relations, FoundAndEnforcedOnANoisyPart)
   EXPECT_EQ(p[Tilted]->origin, fitted[Tilted]->origin);
 
   // Held by the whole part, every direction and the fillet are near the truth.
-  for (int s = 0; s < PartCount; ++s)
-    if (s != Tilted)
-      EXPECT_LT(angle_deg(p[std::size_t(s)]->axis, scene.patches[std::size_t(s)].truth.axis), 0.05) << "segment " << s;
+  for (int s = 0; s < PartCount; ++s) {
+    if (s == Tilted)
+      continue;
+    EXPECT_LT(angle_deg(p[std::size_t(s)]->axis, scene.patches[std::size_t(s)].truth.axis), 0.05) << "segment " << s;
+  }
   EXPECT_LT(std::abs(p[Fillet]->radius - 1.5), 0.02);
 }
 
