@@ -69,7 +69,18 @@ inline FitResult fit_cone_direct(const Eigen::MatrixX3d& points, const Eigen::Ve
   p.origin = m.centroid - m.scale * A_inverse * theta.tail<3>() / 2;
   p.axis = (m.centroid - p.origin).dot(w) >= 0 ? w : Eigen::Vector3d(-w);
   p.half_angle = std::acos(std::sqrt(k));
-  if ((p.origin - m.centroid).norm() > 1e4 * data_extent(points)) {
+  // Near-cylinder data give k ~ 1 - 1e-16, where the apex height b . w / (1 - k) is round-off; the
+  // points' mean distance from the axis over tan(half angle) is where a cone through them puts its apex.
+  double distance = 0, sum_w = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double wi = weights.size() ? weights[i] : 1.0;
+    const Eigen::Vector3d v = points.row(i).transpose() - p.origin;
+    distance += wi * (v - v.dot(w) * w).norm();
+    sum_w += wi;
+  }
+  const double apex_height = distance / sum_w / std::tan(p.half_angle);
+  const double extent = data_extent(points);
+  if (!(apex_height <= 1e4 * extent) || (p.origin - m.centroid).norm() > 1e4 * extent) {
     out.status = Status::failure("the cone's apex is farther than 1e4 times the data extent (cylinder data?)");
     return out;
   }

@@ -16,16 +16,18 @@
 //         are linear in the coefficients once the axis w is fixed, so the constrained problem is a
 //         minimisation of the pencil's smallest eigenvalue over the sphere of directions (a hemisphere:
 //         w and -w are the same constraint). It is not convex, so: 400 directions evenly spread on the
-//         hemisphere (Fibonacci lattice, ~7 degrees apart), the 3 best mutually more than 20 degrees
-//         apart polished, best kept. The polish is coarse-to-fine: a compass search (8 directions, step
-//         halved from 3 degrees to 0.006 degrees) gets into the basin, then Newton steps on the reduced
+//         hemisphere (Fibonacci lattice, ~7 degrees apart); the 3 best mutually more than 20 degrees
+//         apart, and the axis of the unconstrained Taubin quadric (exact on exact data, and found where
+//         a narrow basin hides between grid points), are polished, best kept. The polish is
+//         coarse-to-fine: a compass search (8 directions, step halved from 3 degrees to 0.006 degrees,
+//         at most 100 rounds) gets into the basin, then Newton steps on the reduced
 //         cost with central-difference gradient and Hessian in the tangent plane give the last digits
 //         (exact data: the cost is 0 at the true axis, quadratic around it). The cost is evaluated as
 //         the smallest singular value of R G L^-T (R from a QR of the design matrix, L L^T = G^T N G),
 //         squared: forming M = R^T R would put a 1e-16 round-off floor under the cost and leave the
 //         axis ~sqrt(1e-16 / curvature), i.e. ~1e-7, off on exact partial patches.
 // Cost:   O(N) for the moments (a QR of the N x 9 design matrix); after that every evaluation is a
-//         9 x K SVD (K <= 5), independent of N: about 400 + 3 * 150 evaluations per fit.
+//         9 x K SVD (K <= 5), independent of N: about 400 + 4 * 250 evaluations per fit.
 #ifndef PRIMITIVE_EDIT_QUADRIC_DIRECT_COMMON_H
 #define PRIMITIVE_EDIT_QUADRIC_DIRECT_COMMON_H
 
@@ -38,6 +40,7 @@
 #include "common/geometry/weighted_pca.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SVD>
 
@@ -148,9 +151,10 @@ PencilMinimum<K> pencil_minimum(const QuadricMoments& m, const Eigen::Matrix<dou
   // R G L^-T: squared only at the end, so not limited by round-off of squared sums.
   const Eigen::Matrix<double, 9, K> B = llt.matrixU().template solve<Eigen::OnTheRight>(m.R * G);
   const Eigen::JacobiSVD<Eigen::Matrix<double, 9, K>> svd(B, want_theta ? Eigen::ComputeFullV : 0);
-  const double sigma = svd.singularValues()[K - 1];
-  if (!std::isfinite(sigma))
+  // Eigen leaves the singular values unset for non-finite input: read them only after success.
+  if (svd.info() != Eigen::Success)
     return out;
+  const double sigma = svd.singularValues()[K - 1];
   out.cost = sigma * sigma;
   if (want_theta)
     out.theta = llt.matrixU().solve(Eigen::Matrix<double, K, 1>(svd.matrixV().col(K - 1)));
@@ -161,7 +165,9 @@ PencilMinimum<K> pencil_minimum(const QuadricMoments& m, const Eigen::Matrix<dou
 template <class Cost>
 Eigen::Vector3d polish_axis(Eigen::Vector3d w, double f, const Cost& cost)
 {
-  for (double h = radians_from_degrees(3.0); h > 1e-4;) {
+  // The round cap bounds the walk along a long flat valley (short arcs); Newton takes it from there.
+  int moves = 0;
+  for (double h = radians_from_degrees(3.0); h > 1e-4 && moves < 100; ++moves) {
     const Eigen::Vector3d e1 = any_orthogonal(w), e2 = w.cross(e1);
     Eigen::Vector3d best = w;
     for (int k = 0; k < 8; ++k) {
@@ -206,6 +212,18 @@ Eigen::Vector3d polish_axis(Eigen::Vector3d w, double f, const Cost& cost)
   return w;
 }
 
+// The axis of the unconstrained Taubin quadric: the eigenvector of its A whose eigenvalue is farthest
+// from the other two (exact for exact cylinder and cone data, a good seed for nearly exact data).
+inline Eigen::Vector3d unconstrained_axis(const QuadricMoments& m)
+{
+  const Vec9 c = pencil_minimum<9>(m, Mat9::Identity(), true).theta;
+  Eigen::Matrix3d A;
+  A << c[0], c[3] / 2, c[4] / 2, c[3] / 2, c[1], c[5] / 2, c[4] / 2, c[5] / 2, c[2];
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+  const Eigen::Vector3d& l = eig.eigenvalues();
+  return eig.eigenvectors().col(l[1] - l[0] < l[2] - l[1] ? 2 : 0);
+}
+
 // The axis direction of least pencil cost for the constraint subspace basis(w) (9 x K).
 template <int K, class Basis>
 Eigen::Vector3d minimise_over_axis(const QuadricMoments& m, const Basis& basis)
@@ -221,10 +239,14 @@ Eigen::Vector3d minimise_over_axis(const QuadricMoments& m, const Basis& basis)
     grid.emplace_back(cost(w), w);
   }
   std::sort(grid.begin(), grid.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // A basin narrower than the grid spacing (short arcs of thin cones) can hide between grid points.
   std::vector<Eigen::Vector3d> seeds;
+  const Eigen::Vector3d unconstrained = unconstrained_axis(m);
+  if (unconstrained.allFinite())
+    seeds.push_back(unconstrained);
   const double apart = std::cos(radians_from_degrees(20.0));
   for (const auto& [c, w] : grid) {
-    if (seeds.size() == 3 || !std::isfinite(c))
+    if (seeds.size() == 4 || !std::isfinite(c))
       break;
     if (std::all_of(seeds.begin(), seeds.end(), [&](const Eigen::Vector3d& s) { return std::abs(s.dot(w)) < apart; }))
       seeds.push_back(w);
