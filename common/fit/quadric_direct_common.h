@@ -19,15 +19,15 @@
 //         hemisphere (Fibonacci lattice, ~7 degrees apart); the 3 best mutually more than 20 degrees
 //         apart, and the axis of the unconstrained Taubin quadric (exact on exact data, and found where
 //         a narrow basin hides between grid points), are polished, best kept. The polish is
-//         coarse-to-fine: a compass search (8 directions, step halved from 3 degrees to 0.006 degrees,
-//         at most 100 rounds) gets into the basin, then Newton steps on the reduced
+//         coarse-to-fine: a compass search (8 directions, step halved from 3 degrees to 0.06 degrees,
+//         at most 30 rounds) gets into the basin, then Newton steps on the reduced
 //         cost with central-difference gradient and Hessian in the tangent plane give the last digits
 //         (exact data: the cost is 0 at the true axis, quadratic around it). The cost is evaluated as
 //         the smallest singular value of R G L^-T (R from a QR of the design matrix, L L^T = G^T N G),
 //         squared: forming M = R^T R would put a 1e-16 round-off floor under the cost and leave the
 //         axis ~sqrt(1e-16 / curvature), i.e. ~1e-7, off on exact partial patches.
 // Cost:   O(N) for the moments (a QR of the N x 9 design matrix); after that every evaluation is a
-//         9 x K SVD (K <= 5), independent of N: about 400 + 4 * 250 evaluations per fit.
+//         9 x K SVD (K <= 5, ~4 us), independent of N: 1000-1500 evaluations per fit.
 #ifndef PRIMITIVE_EDIT_QUADRIC_DIRECT_COMMON_H
 #define PRIMITIVE_EDIT_QUADRIC_DIRECT_COMMON_H
 
@@ -167,7 +167,7 @@ Eigen::Vector3d polish_axis(Eigen::Vector3d w, double f, const Cost& cost)
 {
   // The round cap bounds the walk along a long flat valley (short arcs); Newton takes it from there.
   int moves = 0;
-  for (double h = radians_from_degrees(3.0); h > 1e-4 && moves < 100; ++moves) {
+  for (double h = radians_from_degrees(3.0); h > 1e-3 && moves < 30; ++moves) {
     const Eigen::Vector3d e1 = any_orthogonal(w), e2 = w.cross(e1);
     Eigen::Vector3d best = w;
     for (int k = 0; k < 8; ++k) {
