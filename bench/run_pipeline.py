@@ -191,6 +191,7 @@ def run_scan(args, label, scan, truth, segmentation):
                (FIT_ALL, [param("Tolerance", args.fit_tolerance, "RichFloat"),
                           param("Relations", bool(args.relations), "RichBool"),
                           param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                          param("RelationCost", 1, "RichFloat"),
                           param("Snap", True, "RichBool"),
                           param("Export", fit_json, "RichString"), param("SharpEdges", True, "RichBool")]),
                (MEASURE, measure)]

@@ -122,7 +122,7 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                              "and 45 degree faces, coaxial and concentric features, coplanar faces, equal radii, "
                              "fillets tangent to the faces they round) and refit all primitives together under "
                              "them. A relation is kept only if it raises no segment's fit error by more than "
-                             "10%; tilted or free features stay as fitted.");
+                             "Relation Cost; tilted or free features stay as fitted.");
     parlst.addFloat("RelationAngle", 10, "Relation Angle (degrees)",
                               "Directions within this angle of parallel, perpendicular or 45 degrees are "
                               "tested as related (between 0 and 90).");
@@ -130,6 +130,11 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                               "Axes, centres and planes within this distance, in mesh units, are tested as "
                               "coaxial, concentric or coplanar, radii within it as equal; 0 uses 3 times the "
                               "scan's roughness.");
+    parlst.addFloat("RelationCost", RelationOptions().max_cost_increase, "Relation Cost",
+                              "The largest rise of a segment's fit error (sum of squared distances), as a share "
+                              "of it, that the relations may cause: 1 lets it double (RMS x 1.41), which the "
+                              "roughness of a scan explains; a deliberately tilted or offset feature costs far "
+                              "more and keeps its own fit.");
     parlst.addBool("Snap", true, "Snap Segments",
                              "Move every fitted segment onto its primitive.");
     parlst.addString("Export", "", "Export JSON",
@@ -242,6 +247,7 @@ Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parls
   options.relations = parlst.getBool("Relations");
   options.relation_options.angle_deg = parlst.getFloat("RelationAngle");
   options.relation_options.distance = parlst.getFloat("RelationDistance");
+  options.relation_options.max_cost_increase = parlst.getFloat("RelationCost");
   options.snap = parlst.getBool("Snap");
   options.snap_options.sharp_edges = parlst.getBool("SharpEdges");
   const QString path = parlst.getString("Export").trimmed();
@@ -252,6 +258,9 @@ Status PrimitiveFitFilters::fitAllSegments(MeshModel& mm, const Arguments& parls
     return fail(name + QString(": Relation Angle must be between 0 and 90 degrees, not %1.").arg(angle));
   if (!std::isfinite(distance) || distance < 0)
     return fail(name + QString(": Relation Distance must be 0 (automatic) or positive, not %1.").arg(distance));
+  const double cost = options.relation_options.max_cost_increase;
+  if (!(cost > 0) || !std::isfinite(cost))
+    return fail(name + QString(": Relation Cost must be positive, not %1.").arg(cost));
   const LoadedSegments loaded = read_segments(mm);
   if (!loaded.found)
     return fail(name + ": the mesh has no segments; run Segment: Auto by Primitive Fit first.");

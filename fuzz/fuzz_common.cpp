@@ -28,6 +28,7 @@
 #include "common/mesh/segment_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/mesh/smooth_face_normals.h"
+#include "common/fit/fit_quadric_direct.h"
 #include "common/pipeline/fit_all_segments.h"
 #include "common/pipeline/fit_segment.h"
 #include "common/pipeline/snap_onto_primitive.h"
@@ -474,6 +475,11 @@ void run(Decoder& in)
         FUZZ_CHECK(r.primitive.type == type);
         prim_of_segment[size_t(s)] = r.primitive;
       }
+      // The paper's type-constrained direct fit of the same points (a torus is refused: not a quadric).
+      const FitResult direct = fit_quadric_direct(type, ss.points, weights);
+      check_fit(direct);
+      FUZZ_CHECK(!direct.status.ok() || direct.primitive.type == type);
+      FUZZ_CHECK(type != PrimitiveType::Torus || !direct.status.ok());
     } else if (what >= 6) {
       // The filters' and the edit tool's fit: a given type or the automatic one, within the roughness.
       std::optional<PrimitiveType> type;

@@ -50,6 +50,7 @@ FILTERS = [
                                  param("SharpEdges", True, "RichBool")], True),
     ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
                                      param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                                     param("RelationCost", 1, "RichFloat"),
                                      param("Snap", True, "RichBool"),
                                      param("Export", "", "RichString"), param("SharpEdges", True, "RichBool")],
      True),

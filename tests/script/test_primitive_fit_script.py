@@ -64,6 +64,7 @@ def main():
                                            param("MinSegmentFaces", 30, "RichInt")]),
         ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
                                      param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
+                                     param("RelationCost", 1, "RichFloat"),
                                      param("Snap", True, "RichBool"),
                                          param("Export", export, "RichString"),
                                          param("SharpEdges", True, "RichBool")]),
