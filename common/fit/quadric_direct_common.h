@@ -245,8 +245,9 @@ Eigen::Vector3d minimise_over_axis(const QuadricMoments& m, const Basis& basis)
   if (unconstrained.allFinite())
     seeds.push_back(unconstrained);
   const double apart = std::cos(radians_from_degrees(20.0));
-  for (const auto& [c, w] : grid) {
-    if (seeds.size() == 4 || !std::isfinite(c))
+  for (const auto& entry : grid) {  // not a structured binding: C++17 lambdas cannot capture one (clang)
+    const Eigen::Vector3d& w = entry.second;
+    if (seeds.size() == 4 || !std::isfinite(entry.first))
       break;
     if (std::all_of(seeds.begin(), seeds.end(), [&](const Eigen::Vector3d& s) { return std::abs(s.dot(w)) < apart; }))
       seeds.push_back(w);
