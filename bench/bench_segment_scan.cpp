@@ -15,6 +15,8 @@
 // --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
 // with that type (fit_primitive, all points) instead of letting fit_primitive_auto choose: the ceiling with the
 // true types.
+// --method 0|1|2 starts the fits of given types as FitMethod says (0 refined starts, 1 the paper's direct fit,
+// 2 direct then refined; fit_result.h): with --labels and --types, the direct fit on the true segments.
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
@@ -118,6 +120,7 @@ int main(int argc, char** argv)
   bool relations = true;
   primitive_edit::RelationOptions relation_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
+  int method = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -137,6 +140,8 @@ int main(int argc, char** argv)
       relation_options.angle_deg = std::atof(argv[++i]);
     else if (a == "--relation-cost" && has_value)
       relation_options.max_cost_increase = std::atof(argv[++i]);
+    else if (a == "--method" && has_value)
+      method = std::atoi(argv[++i]);
     else if (a == "--labels" && has_value)
       labels_path = argv[++i];
     else if (a == "--types" && has_value)
@@ -154,9 +159,10 @@ int main(int argc, char** argv)
       break;
     }
   }
-  if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0) {
+  if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
+      method >= primitive_edit::kFitMethodCount) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
+                         "[--relations 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -211,6 +217,7 @@ int main(int argc, char** argv)
   FitAllSegmentsOptions fit_all;
   fit_all.tolerance = fit_tolerance;
   fit_all.types = forced_type;
+  fit_all.fit.method = FitMethod(method);
   fit_all.relations = relations;
   fit_all.relation_options = relation_options;
   fit_all.snap = true;

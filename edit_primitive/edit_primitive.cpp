@@ -249,8 +249,9 @@ void EditPrimitivePlugin::split(const Eigen::Vector2d& a, const Eigen::Vector2d&
 void EditPrimitivePlugin::fit()
 {
   const std::optional<PrimitiveType> type = panel_->type();
-  const FitResult result = session_.fit(type);
-  const QString what = QString("fit %1 to %2").arg(type ? primitive_type_name(*type) : "Auto", pickedText());
+  const FitResult result = session_.fit(type, panel_->method());
+  const QString what = QString("fit %1 to %2 (%3)")
+                           .arg(type ? primitive_type_name(*type) : "Auto", pickedText(), fit_method_name(panel_->method()));
   if (result.status.ok())
     report(true, what,
            describe_primitive(result.primitive) + "; RMS " + QString::number(result.rms, 'g', 4).toStdString() +

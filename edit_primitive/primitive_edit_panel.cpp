@@ -88,6 +88,13 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   type_row->addWidget(type_, 1);
   type_row->addWidget(fit);
   fields_->addRow("Type", type_row);
+  fit_method_ = new QComboBox(primitive);
+  fit_method_->addItems({"Refined starts", "Direct (paper)", "Direct, refined"});  // FitMethod order
+  fit_method_->setToolTip("Refined starts: several starts refined on orthogonal distances (most accurate on "
+                          "scans). Direct (paper): Andrews and Sequin's type-constrained direct quadric fit, "
+                          "as the paper does; exact on exact data, biased by noise. Direct, refined: that fit "
+                          "refined. A torus always takes the refined starts.");
+  fields_->addRow("Method", fit_method_);
   radius_ = addField("Radius");
   minor_ = addField("Minor radius");
   half_angle_ = addField("Half-angle (°)");
@@ -172,6 +179,11 @@ std::optional<PrimitiveType> PrimitiveEditPanel::type() const
   if (i <= 0)
     return std::nullopt;
   return PrimitiveType(i - 1);
+}
+
+primitive_edit::FitMethod PrimitiveEditPanel::method() const
+{
+  return primitive_edit::FitMethod(fit_method_->currentIndex());
 }
 
 void PrimitiveEditPanel::setType(std::optional<PrimitiveType> type)

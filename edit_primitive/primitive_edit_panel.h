@@ -8,6 +8,7 @@
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
 
 #include "common/base/primitive.h"
+#include "common/fit/fit_result.h"
 
 #include <QWidget>
 
@@ -33,6 +34,8 @@ public:
   double angle() const;
   // The chosen type; std::nullopt for Auto.
   std::optional<primitive_edit::PrimitiveType> type() const;
+  // How the fit starts (Refined starts, the paper's direct fit, or it refined).
+  primitive_edit::FitMethod method() const;
   void setType(std::optional<primitive_edit::PrimitiveType> type);
 
   void setSegmentInfo(int segment_count, const QString& picked);
@@ -69,6 +72,7 @@ private:
   QLabel* segments_ = nullptr;
   QLabel* picked_ = nullptr;
   QComboBox* type_ = nullptr;
+  QComboBox* fit_method_ = nullptr;
   QLineEdit* radius_ = nullptr;
   QLineEdit* minor_ = nullptr;
   QLineEdit* half_angle_ = nullptr;

@@ -28,6 +28,7 @@ namespace {
 
 // Type parameter: index 0 is Auto, then PrimitiveType in order.
 const QStringList kTypeNames = {"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"};
+const QStringList kMethodNames = {"Refined starts", "Direct (paper)", "Direct, refined"};  // FitMethod order
 
 QString primitive_filter_name(int filter)
 {
@@ -101,6 +102,13 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                             "Id of the segment; -1 takes the selected faces.");
     parlst.addEnum("Type", 0, kTypeNames, "Type",
                              "The primitive to fit; Auto picks the type that explains the points best.");
+    parlst.addEnum("Method", 0, kMethodNames, "Method",
+                             "Refined starts: several starts (algebraic, from normals, principal axes) refined "
+                             "on orthogonal distances with robust weights; the most accurate on rough and "
+                             "partial patches. Direct (paper): Andrews and Sequin's type-constrained direct "
+                             "quadric fit, as the paper estimates a segment's quadric; exact on exact data, "
+                             "biased by noise and outliers. Direct, refined: that fit refined geometrically. "
+                             "A torus is not a quadric and always takes the refined starts.");
   }
   if (id == PRIMITIVE_SNAP_SEGMENT) {
     parlst.addFloat("Radius", 0, "Radius",
@@ -167,6 +175,9 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   const int type_index = parlst.getEnum("Type");
   if (type_index < 0 || type_index > kPrimitiveTypeCount)
     return fail(name + QString(": Type %1 does not exist.").arg(type_index));
+  const int method_index = parlst.getEnum("Method");
+  if (method_index < 0 || method_index >= kFitMethodCount)
+    return fail(name + QString(": Method %1 does not exist.").arg(method_index));
 
   const LoadedSegments loaded = read_segments(mm);
   const bool segmented = loaded.found;
@@ -195,6 +206,7 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
 
   const SegmentSamples samples = std::move(gather_segment_samples(m, labels, target + 1)[size_t(target)]);
   AutoFitOptions options;
+  options.fit.method = FitMethod(method_index);
   if (type_index == 0)  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
     options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
   const std::optional<PrimitiveType> type =
@@ -202,9 +214,9 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   const FitResult fit = fit_segment(samples, type, options);
   if (!fit.status.ok())
     return fail(name + ": " + what + (type ? " cannot be fitted" : " fits no primitive"), fit.status);
-  run.logf("%s: %s (%d points, area %.6g): %s; RMS %.4g, max residual %.4g.", qUtf8Printable(name),
+  run.logf("%s: %s (%d points, area %.6g): %s; RMS %.4g, max residual %.4g; method: %s.", qUtf8Printable(name),
       qUtf8Printable(what), fit.point_count, samples.area, describe_primitive(fit.primitive).c_str(), fit.rms,
-      fit.max_residual);
+      fit.max_residual, fit_method_name(options.fit.method));
   if (!snap) {
     keep_segment_ids(run, name, loaded);
     return Status::success();

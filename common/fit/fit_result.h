@@ -20,10 +20,28 @@ struct FitResult
   int point_count = 0;   // points used
 };
 
+// Where a fit starts (fit_primitive.h): each fit_*.h's own starts refined geometrically (the default: the
+// most accurate on rough and partial patches, bench/README.md), the paper's type-constrained direct quadric
+// fit alone (fit_quadric_direct.h), or that fit refined geometrically. A torus is not a quadric and always
+// takes its own starts.
+enum class FitMethod { Refined, Direct, DirectRefined };
+constexpr int kFitMethodCount = 3;
+
+inline const char* fit_method_name(FitMethod method)
+{
+  switch (method) {
+  case FitMethod::Refined: return "refined starts";
+  case FitMethod::Direct: return "direct (paper)";
+  case FitMethod::DirectRefined: return "direct, refined";
+  }
+  return "unknown";
+}
+
 struct FitOptions
 {
   bool robust = true;       // Tukey-biweight reweighting of the geometric residual (drops outliers)
   int max_iterations = 50;  // Levenberg-Marquardt iterations per (re)weighting round
+  FitMethod method = FitMethod::Refined;
 };
 
 } // namespace primitive_edit

@@ -266,8 +266,9 @@ public:
   }
 
   // Fits a primitive of the given type (std::nullopt: the type that explains the points best) to the union
-  // of the picked segments. On success the fit also becomes the edited primitive.
-  FitResult fit(std::optional<PrimitiveType> type)
+  // of the picked segments, starting as `method` says (fit_result.h). On success the fit also becomes the
+  // edited primitive.
+  FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined)
   {
     clear_fit();
     FitResult out;
@@ -281,6 +282,7 @@ public:
     }
     const SegmentSamples samples = picked_samples();
     AutoFitOptions options;
+    options.fit.method = method;
     if (!type)  // as the filters: a segment of a rough scan is a primitive within the scan's roughness
       options.roughness = roughness();
     out = fit_segment(samples, type, options);

@@ -28,6 +28,7 @@ from make_malformed_meshes import box, make_all  # noqa: E402
 from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply  # noqa: E402
 
 TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
+METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
 
 # (name, params, ours): every parameter listed by name, as meshlabserver 2020.09 requires.
 FILTERS = [
@@ -43,8 +44,10 @@ FILTERS = [
     ("Conditional Face Selection", [param("condSelect", "x0 < 2 && x1 < 2 && x2 < 2", "RichString")], False),
     ("Segment: Split by Selection", [], True),
     ("Segment: Select Segment", [param("Segment", 0, "RichInt")], True),
-    ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), param("Type", 0, "RichEnum", TYPES)], True),
+    ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), param("Type", 0, "RichEnum", TYPES),
+                                param("Method", 0, "RichEnum", METHODS)], True),
     ("Primitive: Snap Segment", [param("Segment", 1, "RichInt"), param("Type", 0, "RichEnum", TYPES),
+                                 param("Method", 0, "RichEnum", METHODS),
                                  param("Radius", 0, "RichFloat"), param("Angle", 0, "RichFloat"),
                                  param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
                                  param("SharpEdges", True, "RichBool")], True),

@@ -5,6 +5,7 @@ import json
 import math
 import os
 import random
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -12,10 +13,12 @@ from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_arg
 
 RADIUS, HEIGHT, SECTORS, RINGS = 4.8, 10.0, 64, 16
 TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
+METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
 
 
-def type_param(index):
-    return param("Type", index, "RichEnum", TYPES)
+def type_param(index, method=0):
+    """Type and Method of Fit Segment and Snap Segment (meshlabserver needs every parameter)."""
+    return [param("Type", index, "RichEnum", TYPES), param("Method", method, "RichEnum", METHODS)]
 
 
 def noisy_closed_cylinder(seed=1, noise=0.02):
@@ -121,7 +124,7 @@ def main():
     cid = cyl[0]["id"] if cyl else 0
     script2 = os.path.join(args.workdir, "snap.mlx")
     write_mlx(script2, [
-        ("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), type_param(3),
+        ("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), *type_param(3),
                                      param("Radius", 5.0, "RichFloat"), param("Angle", 0, "RichFloat"),
                                      param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
                                      param("SharpEdges", True, "RichBool")]),
@@ -141,6 +144,20 @@ def main():
         c.check(len(cyl_vertices) > 0 and mean < 1e-4, "cylinder vertices at radius 5 (mean error %.2g)" % mean)
         c.check(sorted(set(ids)) == [0, 1, 2], "segment ids survive the round trip")
 
+    # The paper's direct fit (Method 1) of the snapped cylinder, whose vertices lie on a cylinder of radius 5:
+    # exact. Refined (Method 2) too.
+    if os.path.exists(out2):
+        for method in (1, 2):
+            script5 = os.path.join(args.workdir, "fit_direct.mlx")
+            write_mlx(script5, [("Primitive: Fit Segment", [param("Segment", cid, "RichInt"), *type_param(3, method)])])
+            code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out2], script5, None, "")
+            name = METHODS[method].lower()
+            line = next((l for l in log.splitlines() if "Primitive: Fit Segment: segment" in l), "")
+            radius = re.search(r"radius ([0-9.e+-]+)", line)
+            c.check(code == 0 and ("method: %s" % name) in line and radius is not None
+                    and abs(float(radius.group(1)) - 5.0) < 1e-4,
+                    "Method %s: the cylinder of radius 5 fitted exactly (%s)" % (METHODS[method], line[-160:]))
+
     # Segment ids are the ones the user reads in the face quality: dense ids in another order are kept, and
     # sparse ones are renumbered in their order and written back.
     if os.path.exists(out2):
@@ -151,7 +168,7 @@ def main():
             dense = sorted(remap.values())
             expected = dense.index(remap[cid])  # the cylinder's id as the filters number it
             script3 = os.path.join(args.workdir, "fit_labelled.mlx")
-            write_mlx(script3, [("Primitive: Fit Segment", [param("Segment", expected, "RichInt"), type_param(0)])])
+            write_mlx(script3, [("Primitive: Fit Segment", [param("Segment", expected, "RichInt"), *type_param(0)])])
             out4 = os.path.join(args.workdir, "labelled_out.ply")
             code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [labelled], script3, out4, "fq")
             c.check(code == 0 and "segment %d (" % expected in log and "Cylinder" in log,
@@ -166,14 +183,14 @@ def main():
     # Bad input: the filter refuses with a clear message and the saved mesh equals the input.
     for label, filters, expect in [
         ("a segment that does not exist",
-         [("Primitive: Fit Segment", [param("Segment", 99, "RichInt"), type_param(0)])],
+         [("Primitive: Fit Segment", [param("Segment", 99, "RichInt"), *type_param(0)])],
          "there is no segment 99"),
         ("too few points for a sphere",
          [("Conditional Face Selection", [param("condSelect", "fi < 1", "RichString")]),
-          ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), type_param(2)])],
+          ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), *type_param(2)])],
          "needs at least 4"),
         ("a cone half-angle of 95 degrees",
-         [("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), type_param(4),
+         [("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), *type_param(4),
                                        param("Radius", 0, "RichFloat"), param("Angle", 95, "RichFloat"),
                                        param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
                                        param("SharpEdges", True, "RichBool")])],

@@ -3,6 +3,7 @@
 // recovered to 1e-6 relative without any geometric refinement; degenerate input is refused with a
 // message that names the problem.
 #include "common/base/constants.h"
+#include "common/fit/fit_primitive.h"
 #include "common/fit/fit_quadric_direct.h"
 #include "test_fit_data.h"
 
@@ -137,6 +138,36 @@ TEST(DirectFit, DispatchByType)
   ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_NEAR(r.primitive.radius, 0.7, kTol * 0.7);
   expect_refused(fit_quadric_direct(PrimitiveType::Torus, s.points), "not a quadric");
+}
+
+// The Method of Fit Segment, Snap Segment and the edit tool: fit_primitive with FitOptions.method.
+TEST(DirectFit, FitPrimitiveMethods)
+{
+  const Primitive truth = make_cylinder({1, 1, 1}, {1, 2, -0.5}, 2);
+  Patch patch;
+  patch.sweep = radians_from_degrees(90.0);
+  patch.extent = 3;
+  const Sample s = sample_primitive(truth, patch, 400, 3);
+  const FitResult direct_alone = fit_quadric_direct(PrimitiveType::Cylinder, s.points);
+  for (FitMethod method : {FitMethod::Direct, FitMethod::DirectRefined, FitMethod::Refined}) {
+    FitOptions options;
+    options.method = method;
+    const FitResult r = fit_primitive(PrimitiveType::Cylinder, s.points, Eigen::MatrixX3d(), Eigen::VectorXd(), options);
+    expect_exact(r, s, 2);
+    EXPECT_NEAR(r.primitive.radius, 2, kTol * 2) << fit_method_name(method);
+    EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol) << fit_method_name(method);
+    if (method == FitMethod::Direct)
+      EXPECT_EQ(r.primitive.radius, direct_alone.primitive.radius);  // the direct fit itself, not refined
+  }
+  // A torus is not a quadric: every method takes fit_torus.
+  const Primitive torus = make_torus({0, 1, 2}, {0, 0, 1}, 5, 1);
+  const Sample t = sample_primitive(torus, Patch(), 600, 5);
+  FitOptions direct;
+  direct.method = FitMethod::Direct;
+  const FitResult r = fit_primitive(PrimitiveType::Torus, t.points, t.normals, Eigen::VectorXd(), direct);
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
+  EXPECT_NEAR(r.primitive.radius, 5, 1e-6);
+  EXPECT_NEAR(r.primitive.minor_radius, 1, 1e-6);
 }
 
 TEST(DirectFit, RefusesTooFewPoints)
