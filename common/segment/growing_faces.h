@@ -1,0 +1,144 @@
+// growing_faces.h: what segment_by_primitive_growing knows of each face, and whether a face agrees with a
+// primitive.
+//
+// Input:  a vcg triangle mesh, its FaceAdjacency and the passes of normal smoothing.
+// Output: GrowingFaces: per face the centroid, the area, the smoothed normal (smooth_face_normals.h) and
+//         `valid` (a finite centroid, a defined normal and a positive area; other faces never seed, grow or
+//         count in a share). Then the tests the phases share:
+//         face_agrees      the centroid within tol of the primitive and the normal within the angle of the
+//                          primitive's normal there (either side), the angle widened linearly to twice its
+//                          value as the distance goes to 0: on a rough scan the local slope of a face that
+//                          lies on the surface is noise, while a face of another surface meeting it at an
+//                          edge is near it only on a band narrower than tol;
+//         agreeing_share   the share of some faces (by area) that agree, on all of them or, sampled_share, on
+//                          at most kShareSampleCount evenly strided ones;
+//         face_samples     the centroids, normals and areas of at most max_count evenly strided faces, as
+//                          fits take them;
+//         face_cost        how badly a primitive explains a face: the centroid's distance plus up to one
+//                          tolerance for a normal that disagrees (the order in which leftover faces are
+//                          handed out, and the border relaxation's measure);
+//         curvature_radius the smallest radius of curvature of a primitive (infinite for planes and cones).
+// Cost:   O(F * smoothing passes) for the faces; O(1) per face test.
+#ifndef PRIMITIVE_EDIT_GROWING_FACES_H
+#define PRIMITIVE_EDIT_GROWING_FACES_H
+
+#include "common/base/primitive.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/mesh/face_centroids_and_areas.h"
+#include "common/mesh/smooth_face_normals.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace primitive_edit {
+
+struct GrowingFaces
+{
+  std::vector<Eigen::Vector3d> centroid, normal;
+  std::vector<double> area;
+  std::vector<char> valid;
+};
+
+constexpr int kShareSampleCount = 2000; // faces sampled_share looks at, at most
+
+template <class MeshType>
+GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoothing_iterations)
+{
+  GrowingFaces g;
+  const std::size_t n = m.face.size();
+  g.normal = smooth_face_normals(m, adj, std::max(0, smoothing_iterations));
+  FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  g.centroid = std::move(faces.centroid);
+  g.area = std::move(faces.area);
+  g.valid.assign(n, 0);
+  for (std::size_t f = 0; f < n; ++f) {
+    if (g.normal[f].isZero(0.0)) {
+      g.centroid[f].setZero();
+      g.area[f] = 0.0;
+    }
+    g.valid[f] = g.area[f] > 0.0 ? 1 : 0;
+  }
+  return g;
+}
+
+inline void face_samples(const GrowingFaces& g, const std::vector<int>& faces, int max_count,
+                         Eigen::MatrixX3d& points, Eigen::MatrixX3d& normals, Eigen::VectorXd& weights)
+{
+  const std::size_t n = faces.size();
+  const std::size_t count = std::min(n, std::size_t(std::max(1, max_count)));
+  points.resize(Eigen::Index(count), 3);
+  normals.resize(Eigen::Index(count), 3);
+  weights.resize(Eigen::Index(count));
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t f = std::size_t(faces[count == n ? i : (i * n) / count]);
+    points.row(Eigen::Index(i)) = g.centroid[f].transpose();
+    normals.row(Eigen::Index(i)) = g.normal[f].transpose();
+    weights[Eigen::Index(i)] = g.area[f];
+  }
+}
+
+inline bool face_agrees(const GrowingFaces& g, const Primitive& prim, int f, double tol, double angle)
+{
+  const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
+  const double d = std::abs(pr.signed_distance);
+  if (!(d <= tol))
+    return false;
+  const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+  return std::acos(c) <= angle * (2.0 - d / tol);
+}
+
+// Share (by area) of faces[i * n / count] for count = min(n, max_count) evenly strided faces.
+inline double strided_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
+                            double angle, std::size_t max_count)
+{
+  const std::size_t n = faces.size();
+  const std::size_t count = std::min(n, max_count);
+  double in = 0, all = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int f = faces[count == n ? i : (i * n) / count];
+    all += g.area[std::size_t(f)];
+    if (face_agrees(g, prim, f, tol, angle))
+      in += g.area[std::size_t(f)];
+  }
+  return all > 0 ? in / all : 0.0;
+}
+
+inline double agreeing_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
+                             double angle)
+{
+  return strided_share(g, prim, faces, tol, angle, faces.size());
+}
+
+inline double sampled_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
+                            double angle)
+{
+  return strided_share(g, prim, faces, tol, angle, kShareSampleCount);
+}
+
+inline double face_cost(const GrowingFaces& g, const Primitive& prim, int f, double tol)
+{
+  if (!g.valid[std::size_t(f)])
+    return std::numeric_limits<double>::max();
+  const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
+  return std::abs(pr.signed_distance) + tol * (1.0 - std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+}
+
+inline double curvature_radius(const Primitive& p)
+{
+  switch (p.type) {
+  case PrimitiveType::Sphere:
+  case PrimitiveType::Cylinder: return p.radius;
+  case PrimitiveType::Torus: return p.minor_radius;
+  default: return std::numeric_limits<double>::infinity();
+  }
+}
+
+} // namespace primitive_edit
+
+#endif

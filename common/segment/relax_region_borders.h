@@ -1,0 +1,64 @@
+// relax_region_borders.h: the last phase of segment_by_primitive_growing: border faces move to the
+// neighbouring region whose primitive explains them best.
+//
+// Input:  GrowingFaces, the FaceAdjacency, the regions' primitives, the tolerance and the labels (labels at or
+//         beyond the region count, components without a region, are left alone).
+// Output: label updated; returns the faces moved.
+// Method: passes over all faces (at most kRelaxPasses, until none moves): a face goes to the adjacent region
+//         with the smallest face_cost, if smaller than its own. Growth within the tolerance lets a region
+//         take the tangent start of the next surface (a plane the start of a fillet); the scan's ground truth
+//         is the nearest surface.
+// Cost:   O(F) per pass.
+#ifndef PRIMITIVE_EDIT_RELAX_REGION_BORDERS_H
+#define PRIMITIVE_EDIT_RELAX_REGION_BORDERS_H
+
+#include "common/segment/growing_faces.h"
+
+#include <vector>
+
+namespace primitive_edit {
+
+constexpr int kRelaxPasses = 20;
+
+inline int relax_region_borders(const GrowingFaces& g, const FaceAdjacency& adj,
+                                const std::vector<Primitive>& primitive_of_region, double tol, std::vector<int>& label)
+{
+  const int face_count = int(label.size());
+  const int regions = int(primitive_of_region.size());
+  auto cost = [&](int f, int r) { return face_cost(g, primitive_of_region[std::size_t(r)], f, tol); };
+  int total = 0;
+  for (int pass = 0; pass < kRelaxPasses; ++pass) {
+    int moved = 0;
+    for (int f = 0; f < face_count; ++f) {
+      const int own = label[std::size_t(f)];
+      if (own < 0 || own >= regions || !g.valid[std::size_t(f)])
+        continue;
+      int best = own;
+      double best_cost = -1;
+      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
+        const int r = label[std::size_t(adj.neighbour[std::size_t(k)])];
+        if (r < 0 || r >= regions || r == best)
+          continue;
+        if (best_cost < 0)
+          best_cost = cost(f, own);
+        const double c = cost(f, r);
+        if (c < best_cost) {
+          best = r;
+          best_cost = c;
+        }
+      }
+      if (best != own) {
+        label[std::size_t(f)] = best;
+        ++moved;
+      }
+    }
+    total += moved;
+    if (moved == 0)
+      break;
+  }
+  return total;
+}
+
+} // namespace primitive_edit
+
+#endif
