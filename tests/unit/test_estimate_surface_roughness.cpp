@@ -3,6 +3,7 @@
 #include "test_mesh.h"
 #include "test_fit_data.h"
 
+#include "common/base/constants.h"
 #include "common/mesh/estimate_surface_roughness.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/fit/fit_primitive_auto.h"
@@ -43,7 +44,51 @@ double roughness_of_grid(double sigma, unsigned seed)
   return estimate_surface_roughness(m, build_face_adjacency(m));
 }
 
+// An open cylinder band of radius r and height 8 as a grid of triangles about 0.1 wide, each vertex moved
+// along the normal by Gaussian noise of std sigma.
+void make_noisy_cylinder(test_mesh::TMesh& m, double r, double sigma, unsigned seed)
+{
+  const int nu = int(std::lround(2 * kPi * r / 0.1)), nv = 80;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  auto vi = vcg::tri::Allocator<test_mesh::TMesh>::AddVertices(m, size_t(nu) * size_t(nv + 1));
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j <= nv; ++j, ++vi) {
+      const double a = 2 * kPi * i / nu, rr = r + (sigma > 0 ? noise(rng) : 0.0);
+      vi->P() = test_mesh::TMesh::CoordType(rr * std::cos(a), rr * std::sin(a), 0.1 * j);
+    }
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      auto at = [&](int a, int b) { return &m.vert[size_t(a % nu) * size_t(nv + 1) + size_t(b)]; };
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+}
+
 } // namespace
+
+TEST(EstimateSurfaceRoughness, NoiseOnCylindersDoesNotGrowWithCurvature)
+{
+  // A patch holds 1/200 of a band's faces, so its share of the circumference is the same on every radius and
+  // a plane's RMS about it grows with the radius of curvature's inverse times the patch's area; a quadric's
+  // is the noise on every radius. The centroid's noise is sigma / sqrt(3).
+  const double sigma = 0.03;
+  for (double r : {1.5, 4.0, 30.0}) {
+    test_mesh::TMesh m;
+    make_noisy_cylinder(m, r, sigma, 7);
+    const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+    const SurfaceRoughness s = measure_surface_roughness(faces.centroid, faces.area, build_face_adjacency(m));
+    EXPECT_GT(s.noise, 0.8 * sigma / std::sqrt(3.0)) << "radius " << r;
+    EXPECT_LT(s.noise, 1.2 * sigma / std::sqrt(3.0)) << "radius " << r;
+    EXPECT_LE(s.roughness, kMedianPatchSmoothRatio * s.noise * (1 + 1e-12)) << "radius " << r;
+    EXPECT_GE(s.waviness, s.noise) << "radius " << r;
+  }
+  test_mesh::TMesh exact;
+  make_noisy_cylinder(exact, 1.5, 0.0, 8);
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(exact);
+  // The faces' centroids lie inside the circle by the chord's sagitta: a quadric follows that too.
+  EXPECT_LT(measure_surface_roughness(faces.centroid, faces.area, build_face_adjacency(exact)).noise, 1e-4);
+}
 
 TEST(EstimateSurfaceRoughness, ExactPlaneIsSmooth)
 {
