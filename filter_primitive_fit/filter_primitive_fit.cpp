@@ -4,7 +4,7 @@
 #include "common/base/describe_primitive.h"
 #include "common/mesh/check_mesh_input.h"
 #include "common/mesh/count_segments.h"
-#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_attribute.h"
@@ -208,7 +208,10 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   AutoFitOptions options;
   options.fit.method = FitMethod(method_index);
   if (type_index == 0)  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
-    options.roughness = estimate_surface_roughness(m, build_face_adjacency(m));
+    if (const std::optional<double> kept = read_surface_roughness(m))
+      options.roughness = *kept;
+    else
+      options.roughness = surface_roughness(m, build_face_adjacency(m));
   const std::optional<PrimitiveType> type =
       type_index == 0 ? std::nullopt : std::optional<PrimitiveType>(PrimitiveType(type_index - 1));
   const FitResult fit = fit_segment(samples, type, options);

@@ -9,6 +9,7 @@
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "common/mesh/segment_primitive_attribute.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/segment/split_segments_by_plane.h"
 #include "meshlab_api/load_segments.h"
 
@@ -259,8 +260,10 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   timer.start();
   std::vector<int> segment_of_face;
   SegmentByPrimitiveGrowingReport report;
+  params.roughness = read_surface_roughness(mm.cm).value_or(0.0);
   const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, run.progress);
   storeSegments(mm, segment_of_face);
+  write_surface_roughness(mm.cm, report.roughness);  // the fits that follow reuse it
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
   return Status::success();

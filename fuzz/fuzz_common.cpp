@@ -27,6 +27,8 @@
 #include "common/mesh/sample_surface_uniform.h"
 #include "common/mesh/segment_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
+#include "common/segment/segment_by_primitive_growing.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/smooth_face_normals.h"
 #include "common/fit/fit_quadric_direct.h"
 #include "common/pipeline/fit_all_segments.h"
@@ -394,6 +396,21 @@ void run(Decoder& in)
   {
     std::vector<int> again;
     FUZZ_CHECK(segment_by_normal_angle(m, params.segment, again) == K && again == seg);
+  }
+
+  // Primitive growing (the scan segmentation) at its defaults: every live face labelled, deterministic, and
+  // the roughness it measured is the one kept on the mesh for the fits.
+  if (in.bit()) {
+    SegmentByPrimitiveGrowingParams grow;
+    std::vector<int> grown, again;
+    SegmentByPrimitiveGrowingReport report;
+    const int G = segment_by_primitive_growing(m, adj, grow, grown, &report);
+    check_segmentation(m, grown, G);
+    FUZZ_CHECK(report.primitive_of_segment.size() == size_t(G));
+    FUZZ_CHECK(std::isfinite(report.roughness) && report.roughness >= 0 && report.tolerance >= 0);
+    FUZZ_CHECK(segment_by_primitive_growing(m, adj, grow, again) == G && again == grown);
+    const double kept = surface_roughness(m, adj);
+    FUZZ_CHECK(std::isfinite(kept) && kept >= 0 && read_surface_roughness(m) == kept);
   }
 
   if (K > 0) {

@@ -13,7 +13,8 @@
 //         that a later Snap Segment keeps sharp edges against them, and normals and bounding box are updated.
 //         A failed status, with the mesh untouched, when there are no segments or the tolerance is negative
 //         or not finite.
-// Method: estimate_surface_roughness (automatic tolerance or relations), gather_segment_samples, fit_segments
+// Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
+//         relations), gather_segment_samples, fit_segments
 //         (all threads), relate_primitives (segment_contacts for the tangencies), snap_segments.
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -22,7 +23,7 @@
 #include "common/base/progress.h"
 #include "common/base/status.h"
 #include "common/mesh/count_segments.h"
-#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_primitive_attribute.h"
@@ -93,7 +94,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   FaceAdjacency adjacency;
   if (options.tolerance == 0 || options.relations) {
     adjacency = build_face_adjacency(m);
-    out.roughness = estimate_surface_roughness(m, adjacency);
+    out.roughness = surface_roughness(m, adjacency);
   }
   if (options.tolerance == 0)
     fit_options.roughness = out.roughness;

@@ -22,7 +22,7 @@
 #include "common/geometry/project_to_window.h"
 #include "common/mesh/check_mesh_input.h"
 #include "common/mesh/count_segments.h"
-#include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_attribute.h"
@@ -157,7 +157,9 @@ public:
       return EditOutcome::refused("the normal angle must be between 0 and 90 degrees");
     std::vector<int> labels;
     SegmentByPrimitiveGrowingReport report;
-    const int k = segment_by_primitive_growing(*mesh_, adjacency_, params, labels, &report, progress);
+    SegmentByPrimitiveGrowingParams with_roughness = params;
+    with_roughness.roughness = roughness();
+    const int k = segment_by_primitive_growing(*mesh_, adjacency_, with_roughness, labels, &report, progress);
     char tolerance[64];
     std::snprintf(tolerance, sizeof tolerance, "%.4g (roughness %.4g)", report.tolerance, report.roughness);
     return replace_segmentation(std::move(labels), std::to_string(k) + " segments by primitive fit, tolerance " +
@@ -543,12 +545,12 @@ private:
       clear_segment_primitives(*mesh_);
   }
 
-  // The scan's roughness, estimated once per session (the vertices a fit sees do not move before an apply,
-  // and an apply moves them onto primitives, which only lowers it).
+  // The scan's roughness, as the filters kept it on the mesh or estimated, once per session (the vertices a
+  // fit sees do not move before an apply, and an apply moves them onto primitives, which only lowers it).
   double roughness()
   {
     if (!roughness_)
-      roughness_ = estimate_surface_roughness(*mesh_, adjacency_);
+      roughness_ = surface_roughness(*mesh_, adjacency_);
     return *roughness_;
   }
 

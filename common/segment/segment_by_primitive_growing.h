@@ -93,6 +93,7 @@ struct SegmentByPrimitiveGrowingParams
   int seed_patch_faces = 60;
   int min_region_faces = 0;      // <= 0: seed_patch_faces
   int smoothing_iterations = 10;
+  double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h); <= 0: estimated
 };
 
 // Wall-clock seconds one phase took (for benches: bench/bench_segment_parts.cpp).
@@ -180,8 +181,10 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       std::sqrt(double(scale.seed_patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
   // Roughness is measured on patches of a fixed share of the surface, so that the estimate does not depend
   // on the resolution and sees noise that is correlated over more than a seed patch (CT scans).
-  const double roughness = estimate_surface_roughness(
-      g.centroid, g.area, adj, std::max(scale.seed_patch_faces, valid_faces / kRoughnessPatchDivisor));
+  const double roughness =
+      params.roughness > 0 ? params.roughness
+                           : estimate_surface_roughness(g.centroid, g.area, adj,
+                                                        std::max(scale.seed_patch_faces, valid_faces / kRoughnessPatchDivisor));
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   scale.tolerance = std::isfinite(tol) && tol > 0 ? tol : 0.0;
   clock.lap("roughness");

@@ -5,6 +5,7 @@
 
 #include "common/base/constants.h"
 #include "common/mesh/estimate_surface_roughness.h"
+#include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/fit/fit_primitive_auto.h"
 
@@ -131,4 +132,20 @@ TEST(AutoFitTolerance, ARoughSegmentIsAPrimitiveWhenTheRoughnessIsKnown)
   const AutoFitResult known = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options);
   ASSERT_TRUE(known.status.ok()) << known.status.error;
   EXPECT_EQ(known.best.primitive.type, PrimitiveType::Plane);
+}
+
+TEST(SurfaceRoughnessAttribute, KeptUntilAVertexMoves)
+{
+  test_mesh::TMesh m;
+  make_noisy_grid(m, 0.05, 9);
+  EXPECT_FALSE(read_surface_roughness(m).has_value());
+  const double measured = surface_roughness(m, build_face_adjacency(m));
+  EXPECT_GT(measured, 0.0);
+  ASSERT_TRUE(read_surface_roughness(m).has_value());
+  EXPECT_EQ(*read_surface_roughness(m), measured);
+  write_surface_roughness(m, 0.5);  // a later filter's own figure replaces it
+  EXPECT_EQ(surface_roughness(m, build_face_adjacency(m)), 0.5);
+  m.vert[17].P()[2] += 0.01f;       // the mesh has changed: measured again
+  EXPECT_FALSE(read_surface_roughness(m).has_value());
+  EXPECT_NEAR(surface_roughness(m, build_face_adjacency(m)), measured, 0.01 * measured);
 }
