@@ -207,11 +207,10 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   const SegmentSamples samples = std::move(gather_segment_samples(m, labels, target + 1)[size_t(target)]);
   AutoFitOptions options;
   options.fit.method = FitMethod(method_index);
-  if (type_index == 0)  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
-    if (const std::optional<double> kept = read_surface_roughness(m))
-      options.roughness = *kept;
-    else
-      options.roughness = surface_roughness(m, build_face_adjacency(m));
+  if (type_index == 0) {  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
+    const std::optional<double> kept = read_surface_roughness(m);
+    options.roughness = kept ? *kept : surface_roughness(m, build_face_adjacency(m));
+  }
   const std::optional<PrimitiveType> type =
       type_index == 0 ? std::nullopt : std::optional<PrimitiveType>(PrimitiveType(type_index - 1));
   const FitResult fit = fit_segment(samples, type, options);
