@@ -11,13 +11,16 @@
 // majority accuracy (each segment votes for its majority surface; by faces), the same by area
 // ("labelled", as bench/score_segmentation.py counts it), and, with the peer part's types, how many of the
 // surfaces recovered at IoU >= 0.5 got a segment primitive of the right type.
+// --method normal runs segment_by_normal_angle instead (the paper's method; --angle, --smoothing and
+// --min-faces set its parameters, defaults the filter's), timed as one phase.
 // Usage: bench_segment_parts MESH.ply --truth LABELS.txt|TRUTH.ply [--runs N] [--tolerance MM] [--angle DEG]
-//        [--segmented OUT.ply]
+//        [--method growing|normal] [--smoothing N] [--min-faces N] [--segmented OUT.ply]
 #include "bracket/bracket_mesh.h"
 
 #include "common/base/describe_primitive.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/face_centroids_and_areas.h"
+#include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
 #include <algorithm>
@@ -192,6 +195,8 @@ int main(int argc, char** argv)
   std::string mesh_path = argv[1], truth_path, segmented_path;
   int runs = 3;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
+  primitive_edit::SegmentByNormalAngleParams normal_params;
+  bool normal_angle = false;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--truth")
@@ -201,7 +206,13 @@ int main(int argc, char** argv)
     else if (key == "--tolerance")
       params.tolerance = std::atof(value.c_str());
     else if (key == "--angle")
-      params.normal_angle_deg = std::atof(value.c_str());
+      params.normal_angle_deg = normal_params.angle_deg = std::atof(value.c_str());
+    else if (key == "--method" && (value == "growing" || value == "normal"))
+      normal_angle = value == "normal";
+    else if (key == "--smoothing")
+      params.smoothing_iterations = normal_params.smoothing_iterations = std::atoi(value.c_str());
+    else if (key == "--min-faces")
+      normal_params.min_segment_faces = std::atoi(value.c_str());
     else if (key == "--segmented")
       segmented_path = value;
     else {
@@ -231,7 +242,14 @@ int main(int argc, char** argv)
     const auto t0 = std::chrono::steady_clock::now();
     const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m);
     const auto t1 = std::chrono::steady_clock::now();
-    K = primitive_edit::segment_by_primitive_growing(m, adj, params, segment, &report);
+    if (normal_angle) {
+      K = primitive_edit::segment_by_normal_angle(m, adj, normal_params, segment);
+      report = {};
+      report.primitive_of_segment.resize(std::size_t(K));
+      report.phase_times.push_back({"normal angle", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count()});
+    } else {
+      K = primitive_edit::segment_by_primitive_growing(m, adj, params, segment, &report);
+    }
     const auto t2 = std::chrono::steady_clock::now();
     times["adjacency"].push_back(std::chrono::duration<double>(t1 - t0).count());
     times["total"].push_back(std::chrono::duration<double>(t2 - t0).count());
