@@ -4,16 +4,18 @@
 //
 // Input:  a vcg triangle mesh, optionally its FaceAdjacency (built here otherwise), and parameters:
 //         tolerance          a face joins a primitive when its centroid is within this distance of it
-//                            (mesh units); <= 0: automatic, 3x the surface roughness, estimated as the
-//                            median plane-fit RMS of small patches spread over the mesh (at least 1/20 of
-//                            the mean edge length, so that exact data still gets a positive tolerance);
+//                            (mesh units); <= 0: automatic, 3x the surface roughness
+//                            (estimate_surface_roughness.h, on patches of 1/200 of the faces; at least 1/20
+//                            of the mean edge length, so that exact data still gets a positive tolerance);
 //         normal_angle_deg   ...and when its smoothed normal is within this angle of the primitive's normal
 //                            there (either orientation: holes and bosses alike); the allowed angle grows
 //                            linearly to twice this as the distance goes to 0 (see below);
 //         seed_patch_faces   size of the patch a seed is fitted on;
 //         min_region_faces   grown regions smaller than this are dissolved and their faces handed to the
 //                            neighbours (<= 0: automatic, = seed_patch_faces);
-//         smoothing_iterations passes of smooth_face_normals (noise in the normals and the seed order).
+//         smoothing_iterations passes of smooth_face_normals (noise in the normals and the seed order);
+//         roughness          the scan's roughness when a filter before measured it (surface_roughness_attribute.h);
+//                            <= 0: estimated here.
 // Method: 1. smoothed face normals; seeds ordered by flatness (the normal's variation over the 1-ring).
 //         2. from the flattest unassigned seed: a patch of seed_patch_faces faces (BFS), fitted by a plane,
 //            else by fit_primitive_auto; a patch that fits nothing marks all its faces as failed seeds.
@@ -49,9 +51,9 @@
 //         dissolve_rough_regions.h (step 3), assign_leftover_faces.h and relax_region_borders.h (step 4); each
 //         is timed in the report.
 // Output: segment_of_face (indexed by vcg::tri::Index): dense ids 0..K-1, -1 for deleted faces. Returns K.
-//         The optional report holds the tolerance used, the roughness estimate and each segment's
-//         primitive (std::nullopt for a segment no primitive was grown for), in the form snap_segments.h
-//         takes.
+//         The optional report holds the tolerance used, the roughness, each segment's primitive
+//         (std::nullopt for a segment no primitive was grown for, in the form snap_segments.h takes) and
+//         each phase's wall-clock time.
 //         Faces without a defined normal (zero area, NaN/Inf coordinates) never seed or grow a region; the
 //         final flood gives them the label of a neighbour.
 // Complexity: O(F log F) time (seed sort and the final priority flood); growth visits each face O(1) times
