@@ -89,7 +89,8 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   type_row->addWidget(fit);
   fields_->addRow("Type", type_row);
   fit_method_ = new QComboBox(primitive);
-  fit_method_->addItems({"Refined starts", "Direct (paper)", "Direct, refined"});  // FitMethod order
+  for (int i = 0; i < primitive_edit::kFitMethodCount; ++i)
+    fit_method_->addItem(primitive_edit::fit_method_name(primitive_edit::FitMethod(i)));
   fit_method_->setToolTip("Refined starts: several starts refined on orthogonal distances (most accurate on "
                           "scans). Direct (paper): Andrews and Sequin's type-constrained direct quadric fit, "
                           "as the paper does; exact on exact data, biased by noise. Direct, refined: that fit "

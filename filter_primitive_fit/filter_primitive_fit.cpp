@@ -28,7 +28,15 @@ namespace {
 
 // Type parameter: index 0 is Auto, then PrimitiveType in order.
 const QStringList kTypeNames = {"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"};
-const QStringList kMethodNames = {"Refined starts", "Direct (paper)", "Direct, refined"};  // FitMethod order
+
+// Method parameter: FitMethod in order.
+QStringList method_names()
+{
+  QStringList names;
+  for (int i = 0; i < kFitMethodCount; ++i)
+    names << fit_method_name(FitMethod(i));
+  return names;
+}
 
 QString primitive_filter_name(int filter)
 {
@@ -102,7 +110,7 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                             "Id of the segment; -1 takes the selected faces.");
     parlst.addEnum("Type", 0, kTypeNames, "Type",
                              "The primitive to fit; Auto picks the type that explains the points best.");
-    parlst.addEnum("Method", 0, kMethodNames, "Method",
+    parlst.addEnum("Method", 0, method_names(), "Method",
                              "Refined starts: several starts (algebraic, from normals, principal axes) refined "
                              "on orthogonal distances with robust weights; the most accurate on rough and "
                              "partial patches. Direct (paper): Andrews and Sequin's type-constrained direct "
@@ -208,8 +216,7 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   AutoFitOptions options;
   options.fit.method = FitMethod(method_index);
   if (type_index == 0) {  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness
-    const std::optional<double> kept = read_surface_roughness(m);
-    options.roughness = kept ? *kept : surface_roughness(m, build_face_adjacency(m));
+    options.roughness = surface_roughness(m);
   }
   const std::optional<PrimitiveType> type =
       type_index == 0 ? std::nullopt : std::optional<PrimitiveType>(PrimitiveType(type_index - 1));

@@ -23,16 +23,16 @@ struct FitResult
 // Where a fit starts (fit_primitive.h): each fit_*.h's own starts refined geometrically (the default: the
 // most accurate on rough and partial patches, bench/README.md), the paper's type-constrained direct quadric
 // fit alone (fit_quadric_direct.h), or that fit refined geometrically. A torus is not a quadric and always
-// takes its own starts.
+// takes its own starts. fit_method_name is the name the filters' Method parameter and the edit tool show.
 enum class FitMethod { Refined, Direct, DirectRefined };
 constexpr int kFitMethodCount = 3;
 
 inline const char* fit_method_name(FitMethod method)
 {
   switch (method) {
-  case FitMethod::Refined: return "refined starts";
-  case FitMethod::Direct: return "direct (paper)";
-  case FitMethod::DirectRefined: return "direct, refined";
+  case FitMethod::Refined: return "Refined starts";
+  case FitMethod::Direct: return "Direct (paper)";
+  case FitMethod::DirectRefined: return "Direct, refined";
   }
   return "unknown";
 }

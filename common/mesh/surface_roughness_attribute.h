@@ -4,7 +4,8 @@
 // A per-mesh attribute (vcg::tri::Allocator) named "SurfaceRoughness" holds the roughness with a hash of the
 // vertex positions and the face count it was measured on; it is read back only while both still match, so a
 // filter that moves vertices (snapping, smoothing) or changes the faces makes the next reader measure again.
-// surface_roughness() returns the kept value or measures, keeps and returns it.
+// surface_roughness() returns the kept value or measures, keeps and returns it (building the face adjacency
+// only when it measures, unless the caller has one).
 // Cost: O(V) for the hash; a measurement costs estimate_surface_roughness's O(F).
 #ifndef PRIMITIVE_EDIT_SURFACE_ROUGHNESS_ATTRIBUTE_H
 #define PRIMITIVE_EDIT_SURFACE_ROUGHNESS_ATTRIBUTE_H
@@ -73,13 +74,27 @@ void write_surface_roughness(MeshType& m, double roughness)
 }
 
 template <class MeshType>
+double measure_and_keep_surface_roughness(MeshType& m, const FaceAdjacency& adj)
+{
+  const double roughness = estimate_surface_roughness(m, adj);
+  write_surface_roughness(m, roughness);
+  return roughness;
+}
+
+template <class MeshType>
 double surface_roughness(MeshType& m, const FaceAdjacency& adj)
 {
   if (const std::optional<double> kept = read_surface_roughness(m))
     return *kept;
-  const double roughness = estimate_surface_roughness(m, adj);
-  write_surface_roughness(m, roughness);
-  return roughness;
+  return measure_and_keep_surface_roughness(m, adj);
+}
+
+template <class MeshType>
+double surface_roughness(MeshType& m)
+{
+  if (const std::optional<double> kept = read_surface_roughness(m))
+    return *kept;
+  return measure_and_keep_surface_roughness(m, build_face_adjacency(m));
 }
 
 } // namespace primitive_edit

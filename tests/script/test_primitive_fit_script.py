@@ -151,7 +151,7 @@ def main():
             script5 = os.path.join(args.workdir, "fit_direct.mlx")
             write_mlx(script5, [("Primitive: Fit Segment", [param("Segment", cid, "RichInt"), *type_param(3, method)])])
             code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out2], script5, None, "")
-            name = METHODS[method].lower()
+            name = METHODS[method]  # the log names the method as the dialog does
             line = next((l for l in log.splitlines() if "Primitive: Fit Segment: segment" in l), "")
             radius = re.search(r"radius ([0-9.e+-]+)", line)
             c.check(code == 0 and ("method: %s" % name) in line and radius is not None

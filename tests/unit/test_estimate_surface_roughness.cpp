@@ -147,6 +147,7 @@ TEST(SurfaceRoughnessAttribute, KeptUntilAVertexMoves)
   EXPECT_GT(measured, 0.0);
   ASSERT_TRUE(read_surface_roughness(m).has_value());
   EXPECT_EQ(*read_surface_roughness(m), measured);
+  EXPECT_EQ(surface_roughness(m), measured);  // kept: no adjacency needed
   write_surface_roughness(m, 0.5);  // a later filter's own figure replaces it
   EXPECT_EQ(surface_roughness(m, build_face_adjacency(m)), 0.5);
   m.vert[17].P()[2] += 0.01f;       // the mesh has changed: measured again
