@@ -157,10 +157,10 @@ void SegmentFilters::parameters(int id, MeshDocument& document, ParameterList& p
                               "A face joins a primitive when it is this close to it, in mesh units; 0 estimates "
                               "it from the scan's roughness.");
     parlst.addFloat("NormalAngle", growing.normal_angle_deg, "Normal Angle (degrees)",
-                              "...and when its smoothed normal is within this angle of the primitive's.");
+                              "...and when its smoothed normal is within this angle of the primitive's (1 to 89).");
     parlst.addInt("SeedPatchFaces", growing.seed_patch_faces, "Seed Patch Size (faces)",
                             "Faces of the patch each region starts from; regions curved tighter than such a "
-                            "patch are taken for rounded edges.");
+                            "patch are taken for rounded edges (at least 8).");
     parlst.addInt("NormalSmoothing", growing.smoothing_iterations, "Normal Smoothing Steps",
                             "Passes of face normal averaging against scan noise.");
     break;
@@ -247,14 +247,8 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   params.normal_angle_deg = parlst.getFloat("NormalAngle");
   params.seed_patch_faces = parlst.getInt("SeedPatchFaces");
   params.smoothing_iterations = parlst.getInt("NormalSmoothing");
-  if (!std::isfinite(params.tolerance) || params.tolerance < 0)
-    return fail(name + QString(": Tolerance must be 0 (automatic) or positive, not %1.").arg(params.tolerance));
-  if (!(params.normal_angle_deg > 0 && params.normal_angle_deg < 90))
-    return fail(name + QString(": Normal Angle must be between 0 and 90 degrees, not %1.").arg(params.normal_angle_deg));
-  if (params.seed_patch_faces < 4)
-    return fail(name + QString(": Seed Patch Size must be at least 4 faces, not %1.").arg(params.seed_patch_faces));
-  if (params.smoothing_iterations < 0 || params.smoothing_iterations > 1000)
-    return fail(name + QString(": Normal Smoothing Steps must be 0 to 1000, not %1.").arg(params.smoothing_iterations));
+  if (const Status bad = check_primitive_growing_params(params); !bad)
+    return fail(name + ": " + QString::fromStdString(bad.error));
 
   QElapsedTimer timer;
   timer.start();

@@ -151,10 +151,8 @@ public:
   {
     if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
-    if (!std::isfinite(params.tolerance) || params.tolerance < 0)
-      return EditOutcome::refused("the tolerance must be 0 (automatic) or positive");
-    if (!(params.normal_angle_deg > 0 && params.normal_angle_deg < 90))
-      return EditOutcome::refused("the normal angle must be between 0 and 90 degrees");
+    if (const Status bad = check_primitive_growing_params(params); !bad)
+      return EditOutcome::refused(bad.error);
     std::vector<int> labels;
     SegmentByPrimitiveGrowingReport report;
     SegmentByPrimitiveGrowingParams with_roughness = params;

@@ -67,6 +67,7 @@
 #include "common/base/constants.h"
 #include "common/base/primitive.h"
 #include "common/base/progress.h"
+#include "common/base/status.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/estimate_surface_roughness.h"
 #include "common/mesh/face_adjacency.h"
@@ -83,7 +84,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace primitive_edit {
@@ -97,6 +100,34 @@ struct SegmentByPrimitiveGrowingParams
   int smoothing_iterations = 10;
   double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h); <= 0: estimated
 };
+
+// The ranges a user's parameters must lie in; the segmentation itself keeps within them whatever it is given
+// (for the fuzz target), so adapters check first and refuse, rather than have a number silently changed.
+constexpr double kMinGrowingNormalAngleDeg = 1.0, kMaxGrowingNormalAngleDeg = 89.0;
+constexpr int kMinSeedPatchFaces = 8;
+constexpr int kMaxSmoothingIterations = 1000;
+
+// Refuses parameters out of range, naming them as the filter's dialog does.
+inline Status check_primitive_growing_params(const SegmentByPrimitiveGrowingParams& params)
+{
+  auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return std::string(text);
+  };
+  if (!std::isfinite(params.tolerance) || params.tolerance < 0)
+    return Status::failure("Tolerance must be 0 (automatic) or positive, not " + number(params.tolerance) + ".");
+  if (!(params.normal_angle_deg >= kMinGrowingNormalAngleDeg && params.normal_angle_deg <= kMaxGrowingNormalAngleDeg))
+    return Status::failure("Normal Angle must be between " + number(kMinGrowingNormalAngleDeg) + " and " +
+                           number(kMaxGrowingNormalAngleDeg) + " degrees, not " + number(params.normal_angle_deg) + ".");
+  if (params.seed_patch_faces < kMinSeedPatchFaces)
+    return Status::failure("Seed Patch Size must be at least " + std::to_string(kMinSeedPatchFaces) + " faces, not " +
+                           std::to_string(params.seed_patch_faces) + ".");
+  if (params.smoothing_iterations < 0 || params.smoothing_iterations > kMaxSmoothingIterations)
+    return Status::failure("Normal Smoothing Steps must be 0 to " + std::to_string(kMaxSmoothingIterations) +
+                           ", not " + std::to_string(params.smoothing_iterations) + ".");
+  return Status::success();
+}
 
 // Wall-clock seconds one phase took (for benches: bench/bench_segment_parts.cpp).
 struct SegmentPhaseTime
@@ -170,10 +201,11 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("normals");
 
   GrowingScale scale;
-  scale.seed_patch_faces = std::max(8, params.seed_patch_faces);
+  scale.seed_patch_faces = std::max(kMinSeedPatchFaces, params.seed_patch_faces);
   scale.min_region_faces = params.min_region_faces > 0 ? params.min_region_faces : scale.seed_patch_faces;
   scale.angle = radians_from_degrees(std::isfinite(params.normal_angle_deg)
-                                         ? std::min(std::max(params.normal_angle_deg, 1.0), 89.0)
+                                         ? std::min(std::max(params.normal_angle_deg, kMinGrowingNormalAngleDeg),
+                                                    kMaxGrowingNormalAngleDeg)
                                          : SegmentByPrimitiveGrowingParams().normal_angle_deg);
   int valid_faces = 0;
   const double mean_edge = mean_edge_length(g, valid_faces);

@@ -156,8 +156,9 @@ TEST(DirectFit, FitPrimitiveMethods)
     expect_exact(r, s, 2);
     EXPECT_NEAR(r.primitive.radius, 2, kTol * 2) << fit_method_name(method);
     EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol) << fit_method_name(method);
-    if (method == FitMethod::Direct)
+    if (method == FitMethod::Direct) {
       EXPECT_EQ(r.primitive.radius, direct_alone.primitive.radius);  // the direct fit itself, not refined
+    }
   }
   // A torus is not a quadric: every method takes fit_torus.
   const Primitive torus = make_torus({0, 1, 2}, {0, 0, 1}, 5, 1);

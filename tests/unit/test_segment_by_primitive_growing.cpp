@@ -18,6 +18,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace primitive_edit;
@@ -372,6 +373,28 @@ TYPED_TEST(PrimitiveGrowingTest, BadInputDoesNotCrash)
   for (auto& p : tiny.vert)
     p.P() = grow_coord<TypeParam>(1, 1, 1);
   EXPECT_EQ(segment_by_primitive_growing(tiny, SegmentByPrimitiveGrowingParams(), seg), 1);
+}
+
+// Out-of-range numbers are refused with the parameter's name, never changed: the segmentation would keep
+// within range on its own, so an adapter that skipped this check would silently use another value.
+TEST(PrimitiveGrowingParams, OutOfRangeIsRefusedByName)
+{
+  EXPECT_TRUE(check_primitive_growing_params(SegmentByPrimitiveGrowingParams()).ok());
+  auto refusal = [](auto change) {
+    SegmentByPrimitiveGrowingParams params;
+    change(params);
+    return check_primitive_growing_params(params).error;
+  };
+  EXPECT_NE(refusal([](auto& p) { p.tolerance = std::nan(""); }).find("Tolerance"), std::string::npos);
+  EXPECT_NE(refusal([](auto& p) { p.tolerance = -1; }).find("Tolerance"), std::string::npos);
+  EXPECT_NE(refusal([](auto& p) { p.normal_angle_deg = 0.5; }).find("Normal Angle"), std::string::npos);
+  EXPECT_NE(refusal([](auto& p) { p.normal_angle_deg = 89.5; }).find("not 89.5"), std::string::npos);
+  EXPECT_NE(refusal([](auto& p) { p.seed_patch_faces = 7; }).find("Seed Patch Size"), std::string::npos);
+  EXPECT_NE(refusal([](auto& p) { p.smoothing_iterations = 1001; }).find("Normal Smoothing Steps"), std::string::npos);
+  EXPECT_TRUE(refusal([](auto& p) {
+                p.normal_angle_deg = kMaxGrowingNormalAngleDeg;
+                p.seed_patch_faces = kMinSeedPatchFaces;
+              }).empty());
 }
 
 } // namespace
