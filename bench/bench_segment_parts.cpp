@@ -11,13 +11,16 @@
 // majority accuracy (each segment votes for its majority surface; by faces), the same by area
 // ("labelled", as bench/score_segmentation.py counts it), and, with the peer part's types, how many of the
 // surfaces recovered at IoU >= 0.5 got a segment primitive of the right type.
+// Each run segments once on 1 thread and once on all (--threads N: on 1 and N), alternating, and the medians
+// are printed per thread count; the segmentations must be identical (the bench fails otherwise).
 // --method normal runs segment_by_normal_angle instead (the paper's method; --angle, --smoothing and
 // --min-faces set its parameters, defaults the filter's), timed as one phase.
 // Usage: bench_segment_parts MESH.ply --truth LABELS.txt|TRUTH.ply [--runs N] [--tolerance MM] [--angle DEG]
-//        [--method growing|normal] [--smoothing N] [--min-faces N] [--segmented OUT.ply]
+//        [--method growing|normal] [--smoothing N] [--min-faces N] [--threads N] [--segmented OUT.ply]
 #include "bracket/bracket_mesh.h"
 
 #include "common/base/describe_primitive.h"
+#include "common/base/parallel_for.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/face_centroids_and_areas.h"
 #include "common/segment/segment_by_normal_angle.h"
@@ -193,7 +196,7 @@ int main(int argc, char** argv)
     return 2;
   }
   std::string mesh_path = argv[1], truth_path, segmented_path;
-  int runs = 3;
+  int runs = 3, threads = primitive_edit::resolve_thread_count(0);
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   primitive_edit::SegmentByNormalAngleParams normal_params;
   bool normal_angle = false;
@@ -213,6 +216,8 @@ int main(int argc, char** argv)
       params.smoothing_iterations = normal_params.smoothing_iterations = std::atoi(value.c_str());
     else if (key == "--min-faces")
       normal_params.min_segment_faces = std::atoi(value.c_str());
+    else if (key == "--threads")
+      threads = std::max(1, std::atoi(value.c_str()));
     else if (key == "--segmented")
       segmented_path = value;
     else {
@@ -231,39 +236,57 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "%s\n", message.c_str());
     return 1;
   }
-  std::printf("%s: %zu faces, %d run(s), 1 thread\n", mesh_path.c_str(), m.face.size(), runs);
+  std::vector<int> thread_counts{1};
+  if (threads > 1)
+    thread_counts.push_back(threads);
+  std::printf("%s: %zu faces, %d run(s) per thread count\n", mesh_path.c_str(), m.face.size(), runs);
 
-  std::map<std::string, std::vector<double>> times;
+  std::map<int, std::map<std::string, std::vector<double>>> times;  // threads -> phase -> seconds
   std::vector<std::string> phase_order{"adjacency"};
-  std::vector<int> segment;
+  std::vector<int> segment, first_segment;
   primitive_edit::SegmentByPrimitiveGrowingReport report;
   int K = 0;
   for (int run = 0; run < runs; ++run) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m);
-    const auto t1 = std::chrono::steady_clock::now();
-    if (normal_angle) {
-      K = primitive_edit::segment_by_normal_angle(m, adj, normal_params, segment);
-      report = {};
-      report.primitive_of_segment.resize(std::size_t(K));
-      report.phase_times.push_back({"normal angle", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count()});
-    } else {
-      K = primitive_edit::segment_by_primitive_growing(m, adj, params, segment, &report);
-    }
-    const auto t2 = std::chrono::steady_clock::now();
-    times["adjacency"].push_back(std::chrono::duration<double>(t1 - t0).count());
-    times["total"].push_back(std::chrono::duration<double>(t2 - t0).count());
-    for (const auto& phase : report.phase_times) {
-      if (run == 0)
-        phase_order.push_back(phase.phase);
-      times[phase.phase].push_back(phase.seconds);
+    for (const int t : thread_counts) {
+      params.threads = t;
+      const auto t0 = std::chrono::steady_clock::now();
+      const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m);
+      const auto t1 = std::chrono::steady_clock::now();
+      if (normal_angle) {
+        K = primitive_edit::segment_by_normal_angle(m, adj, normal_params, segment);
+        report = {};
+        report.primitive_of_segment.resize(std::size_t(K));
+        report.phase_times.push_back(
+            {"normal angle", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count()});
+      } else {
+        K = primitive_edit::segment_by_primitive_growing(m, adj, params, segment, &report);
+      }
+      const auto t2 = std::chrono::steady_clock::now();
+      if (first_segment.empty())
+        first_segment = segment;
+      else if (segment != first_segment) {
+        std::fprintf(stderr, "the segmentation on %d threads differs from the first run's\n", t);
+        return 1;
+      }
+      times[t]["adjacency"].push_back(std::chrono::duration<double>(t1 - t0).count());
+      times[t]["total"].push_back(std::chrono::duration<double>(t2 - t0).count());
+      for (const auto& phase : report.phase_times) {
+        if (run == 0 && t == 1)
+          phase_order.push_back(phase.phase);
+        times[t][phase.phase].push_back(phase.seconds);
+      }
     }
   }
   phase_order.push_back("total");
-  std::printf("median seconds:");
-  for (const std::string& phase : phase_order)
-    std::printf(" %s %.3f", phase.c_str(), median(times[phase]));
-  std::printf("\n");
+  for (const int t : thread_counts) {
+    std::printf("median seconds, %d thread%s:", t, t > 1 ? "s" : "");
+    for (const std::string& phase : phase_order)
+      std::printf(" %s %.3f", phase.c_str(), median(times[t][phase]));
+    std::printf("\n");
+  }
+  if (thread_counts.size() > 1)
+    std::printf("identical segmentations on 1 and %d threads; total ratio %.2fx\n", threads,
+                median(times[1]["total"]) / median(times[threads]["total"]));
   if (!truth_path.empty())
     print_scores(m, truth, segment, K, report);
   if (!segmented_path.empty()) {

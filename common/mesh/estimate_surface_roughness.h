@@ -26,10 +26,11 @@
 //         Measured (bench/README.md, 400 patches of F / 200 faces): peer part 1M, vertex noise 0.05 along the
 //         normal (centroid noise 0.029): noise 0.0292, waviness 0.177 (edges), returned 0.0292; the same part
 //         without noise: 0; bracket CT scan 148k: noise 0.131, waviness 0.322, returned 0.322.
-// Cost:   O(F) for the face centroids plus O(400 * patch size).
+// Cost:   O(F) for the face centroids plus O(400 * patch size) divided by the threads.
 #ifndef PRIMITIVE_EDIT_ESTIMATE_SURFACE_ROUGHNESS_H
 #define PRIMITIVE_EDIT_ESTIMATE_SURFACE_ROUGHNESS_H
 
+#include "common/base/parallel_for.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/face_centroids_and_areas.h"
 #include "common/geometry/weighted_pca.h"
@@ -39,6 +40,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace primitive_edit {
@@ -46,45 +49,34 @@ namespace primitive_edit {
 // A median plane RMS beyond this multiple of the quadric noise means the median patch straddles an edge.
 constexpr double kMedianPatchSmoothRatio = 3.0;
 
-// Weighted RMS of the points about their least-squares quadric height field over the PCA plane; -1 when the
-// patch has no plane (zero weight) or the normal equations are singular.
-inline double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights)
+// Weighted RMS of the points about their least-squares quadric height field over their PCA plane (pca: their
+// weighted_pca); -1 when the patch has no plane (zero weight) or the normal equations are singular.
+inline double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const WeightedPca& pca)
 {
-  const WeightedPca pca = weighted_pca(points, weights);
   if (!pca.ok)
     return -1.0;
-  const Eigen::Vector3d eu = pca.axes.col(2), ev = pca.axes.col(1), en = pca.axes.col(0);
   // Coordinates scaled by the patch's extent keep the 6 x 6 normal equations well conditioned.
   const double scale = std::sqrt(std::max(pca.eigenvalues[2], 1e-300));
-  Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  Eigen::Matrix<double, 6, 1> row;
-  double sum_w = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
-    const double u = d.dot(eu) / scale, v = d.dot(ev) / scale, h = d.dot(en);
-    row << u * u, u * v, v * v, u, v, 1.0;
-    A.selfadjointView<Eigen::Lower>().rankUpdate(row, weights[i]);
-    rhs += weights[i] * h * row;
-    sum_w += weights[i];
-  }
+  const Eigen::MatrixX3d local = (points.rowwise() - pca.centroid.transpose()) * pca.axes;  // (n, v, u) per row
+  Eigen::Matrix<double, Eigen::Dynamic, 6> rows(points.rows(), 6);
+  rows.col(0) = local.col(2).array().square() / (scale * scale);
+  rows.col(1) = local.col(2).array() * local.col(1).array() / (scale * scale);
+  rows.col(2) = local.col(1).array().square() / (scale * scale);
+  rows.col(3) = local.col(2) / scale;
+  rows.col(4) = local.col(1) / scale;
+  rows.col(5).setOnes();
+  const double sum_w = weights.sum();
   if (!(sum_w > 0))
     return -1.0;
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A.selfadjointView<Eigen::Lower>());
+  const Eigen::Matrix<double, 6, 6> A = rows.transpose() * weights.asDiagonal() * rows;
+  const Eigen::Matrix<double, 6, 1> rhs = rows.transpose() * weights.cwiseProduct(local.col(0));
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * ldlt.vectorD().cwiseAbs().maxCoeff()))
     return -1.0;
-  const Eigen::Matrix<double, 6, 1> c = ldlt.solve(rhs);
-  double sum_r2 = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
-    const double u = d.dot(eu) / scale, v = d.dot(ev) / scale, h = d.dot(en);
-    row << u * u, u * v, v * v, u, v, 1.0;
-    const double r = h - row.dot(c);
-    sum_r2 += weights[i] * r * r;
-  }
+  const Eigen::VectorXd r = local.col(0) - rows * ldlt.solve(rhs);
   // The fit's 6 parameters take 6 of the N degrees of freedom.
   const double n = double(points.rows());
-  return std::sqrt(sum_r2 / sum_w * n / (n - 6.0));
+  return std::sqrt(weights.dot(r.cwiseAbs2()) / sum_w * n / (n - 6.0));
 }
 
 struct SurfaceRoughness
@@ -92,9 +84,49 @@ struct SurfaceRoughness
   double noise = 0, waviness = 0, roughness = 0;
 };
 
+namespace roughness_detail {
+
+// The patch of up to patch_faces usable faces grown breadth-first from a seed (stamp: per-face marks).
+inline void grow_patch(const FaceAdjacency& adj, const std::vector<double>& area, int seed, int mark, int patch_faces,
+                       std::vector<int>& stamp, std::vector<int>& patch)
+{
+  patch.assign(1, seed);
+  stamp[std::size_t(seed)] = mark;
+  for (std::size_t head = 0; head < patch.size() && int(patch.size()) < patch_faces; ++head) {
+    const int f = patch[head];
+    for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1] && int(patch.size()) < patch_faces;
+         ++k) {
+      const int h = adj.neighbour[std::size_t(k)];
+      if (stamp[std::size_t(h)] != mark && area[std::size_t(h)] > 0) {
+        stamp[std::size_t(h)] = mark;
+        patch.push_back(h);
+      }
+    }
+  }
+}
+
+// The RMS about the patch's plane and about its quadric (NaN where there is none).
+inline std::pair<double, double> patch_rms(const std::vector<Eigen::Vector3d>& centroid,
+                                           const std::vector<double>& area, const std::vector<int>& patch)
+{
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  Eigen::MatrixX3d points(Eigen::Index(patch.size()), 3);
+  Eigen::VectorXd weights(Eigen::Index(patch.size()));
+  for (std::size_t j = 0; j < patch.size(); ++j) {
+    points.row(Eigen::Index(j)) = centroid[std::size_t(patch[j])].transpose();
+    weights[Eigen::Index(j)] = area[std::size_t(patch[j])];
+  }
+  const WeightedPca pca = weighted_pca(points, weights);
+  const double plane = pca.ok && std::isfinite(pca.eigenvalues[0]) ? std::sqrt(std::max(0.0, pca.eigenvalues[0])) : none;
+  const double q = patch.size() > 12 ? quadric_patch_rms(points, weights, pca) : -1.0;
+  return {plane, q >= 0 && std::isfinite(q) ? q : none};
+}
+
+} // namespace roughness_detail
+
 inline SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vector3d>& centroid,
                                                   const std::vector<double>& area, const FaceAdjacency& adj,
-                                                  int patch_faces = 0)
+                                                  int patch_faces = 0, int threads = 0)
 {
   SurfaceRoughness out;
   const std::size_t n = centroid.size();
@@ -107,38 +139,25 @@ inline SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vecto
   if (patch_faces <= 0)
     patch_faces = std::max(60, int(usable_faces.size() / 200));
 
+  // Each patch is measured alone and its figures kept at its own index, so the quantiles below see the same
+  // values in the same order whatever the threads.
   const std::size_t seeds = std::min<std::size_t>(400, usable_faces.size());
-  std::vector<int> stamp(n, -1), patch;
+  std::vector<std::pair<double, double>> rms(seeds, {std::nan(""), std::nan("")});
+  parallel_for(seeds, threads, 50, [&](std::size_t begin, std::size_t end) {
+    std::vector<int> stamp(n, -1), patch;
+    for (std::size_t i = begin; i < end; ++i) {
+      roughness_detail::grow_patch(adj, area, usable_faces[(i * usable_faces.size()) / seeds], int(i), patch_faces,
+                                   stamp, patch);
+      if (int(patch.size()) >= std::max(3, patch_faces / 2))
+        rms[i] = roughness_detail::patch_rms(centroid, area, patch);
+    }
+  });
   std::vector<double> plane_rms, quadric_rms;
-  for (std::size_t i = 0; i < seeds; ++i) {
-    const int seed = usable_faces[(i * usable_faces.size()) / seeds];
-    patch.assign(1, seed);
-    stamp[std::size_t(seed)] = int(i);
-    for (std::size_t head = 0; head < patch.size() && int(patch.size()) < patch_faces; ++head) {
-      const int f = patch[head];
-      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1] && int(patch.size()) < patch_faces;
-           ++k) {
-        const int h = adj.neighbour[std::size_t(k)];
-        if (stamp[std::size_t(h)] != int(i) && area[std::size_t(h)] > 0) {
-          stamp[std::size_t(h)] = int(i);
-          patch.push_back(h);
-        }
-      }
-    }
-    if (int(patch.size()) < std::max(3, patch_faces / 2))
-      continue;
-    Eigen::MatrixX3d points(Eigen::Index(patch.size()), 3);
-    Eigen::VectorXd weights(Eigen::Index(patch.size()));
-    for (std::size_t j = 0; j < patch.size(); ++j) {
-      points.row(Eigen::Index(j)) = centroid[std::size_t(patch[j])].transpose();
-      weights[Eigen::Index(j)] = area[std::size_t(patch[j])];
-    }
-    const WeightedPca pca = weighted_pca(points, weights);
-    if (pca.ok && std::isfinite(pca.eigenvalues[0]))
-      plane_rms.push_back(std::sqrt(std::max(0.0, pca.eigenvalues[0])));
-    const double q = patch.size() > 12 ? quadric_patch_rms(points, weights) : -1.0;
-    if (q >= 0 && std::isfinite(q))
-      quadric_rms.push_back(q);
+  for (const auto& [plane, quadric] : rms) {
+    if (!std::isnan(plane))
+      plane_rms.push_back(plane);
+    if (!std::isnan(quadric))
+      quadric_rms.push_back(quadric);
   }
   if (plane_rms.empty())
     return out;
@@ -153,9 +172,9 @@ inline SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vecto
 }
 
 inline double estimate_surface_roughness(const std::vector<Eigen::Vector3d>& centroid, const std::vector<double>& area,
-                                         const FaceAdjacency& adj, int patch_faces = 0)
+                                         const FaceAdjacency& adj, int patch_faces = 0, int threads = 0)
 {
-  return measure_surface_roughness(centroid, area, adj, patch_faces).roughness;
+  return measure_surface_roughness(centroid, area, adj, patch_faces, threads).roughness;
 }
 
 template <class MeshType>

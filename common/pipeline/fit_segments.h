@@ -14,6 +14,7 @@
 #ifndef PRIMITIVE_EDIT_FIT_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_SEGMENTS_H
 
+#include "common/base/parallel_for.h"
 #include "common/base/progress.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/pipeline/fit_segment.h"
@@ -52,9 +53,7 @@ inline std::vector<FitResult> fit_segments(const std::vector<SegmentSamples>& se
     }
   };
 
-  if (threads <= 0)
-    threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, count));
+  threads = std::max(1, std::min(resolve_thread_count(threads), count));
   std::vector<std::thread> helpers;
   for (int t = 1; t < threads; ++t)
     helpers.emplace_back(work, false);

@@ -1,7 +1,7 @@
 // growing_faces.h: what segment_by_primitive_growing knows of each face, and whether a face agrees with a
 // primitive.
 //
-// Input:  a vcg triangle mesh, its FaceAdjacency and the passes of normal smoothing.
+// Input:  a vcg triangle mesh, its FaceAdjacency, the passes of normal smoothing and the threads for it.
 // Output: GrowingFaces: per face the centroid, the area, the smoothed normal (smooth_face_normals.h) and
 //         `valid` (a finite centroid, a defined normal and a positive area; other faces never seed, grow or
 //         count in a share). Then the tests the phases share:
@@ -48,11 +48,11 @@ struct GrowingFaces
 constexpr int kShareSampleCount = 2000; // faces sampled_share looks at, at most
 
 template <class MeshType>
-GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoothing_iterations)
+GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoothing_iterations, int threads = 0)
 {
   GrowingFaces g;
   const std::size_t n = m.face.size();
-  g.normal = smooth_face_normals(m, adj, std::max(0, smoothing_iterations));
+  g.normal = smooth_face_normals(m, adj, std::max(0, smoothing_iterations), 180.0, threads);
   FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
   g.centroid = std::move(faces.centroid);
   g.area = std::move(faces.area);

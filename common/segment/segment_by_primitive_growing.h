@@ -99,6 +99,7 @@ struct SegmentByPrimitiveGrowingParams
   int min_region_faces = 0;      // <= 0: seed_patch_faces
   int smoothing_iterations = 10;
   double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h); <= 0: estimated
+  int threads = 0;               // for normal smoothing and the roughness (<= 0: all); the result does not depend on it
 };
 
 // The ranges a user's parameters must lie in; the segmentation itself keeps within them whatever it is given
@@ -147,13 +148,11 @@ struct SegmentByPrimitiveGrowingReport
 
 namespace grow_detail {
 
-constexpr int kRoughnessPatchDivisor = 200; // roughness patches hold 1/200 of the faces
-
 // The mean edge length: a triangle of area a has a mean edge of about sqrt(4a / sqrt(3)).
-inline double mean_edge_length(const GrowingFaces& g, int& valid_faces)
+inline double mean_edge_length(const GrowingFaces& g)
 {
   double sum = 0;
-  valid_faces = 0;
+  int valid_faces = 0;
   for (std::size_t f = 0; f < g.valid.size(); ++f)
     if (g.valid[f]) {
       sum += std::sqrt(4.0 * g.area[f] / std::sqrt(3.0));
@@ -197,7 +196,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   PhaseClock clock(report ? &report->phase_times : nullptr);
 
   report_progress(progress, 0, "Smoothing face normals");
-  const GrowingFaces g = growing_faces(m, adj, params.smoothing_iterations);
+  const GrowingFaces g = growing_faces(m, adj, params.smoothing_iterations, params.threads);
   clock.lap("normals");
 
   GrowingScale scale;
@@ -207,18 +206,15 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
                                          ? std::min(std::max(params.normal_angle_deg, kMinGrowingNormalAngleDeg),
                                                     kMaxGrowingNormalAngleDeg)
                                          : SegmentByPrimitiveGrowingParams().normal_angle_deg);
-  int valid_faces = 0;
-  const double mean_edge = mean_edge_length(g, valid_faces);
+  const double mean_edge = mean_edge_length(g);
   // A surface curved more tightly than a seed patch is wide is an edge rounded by the scanner (blur), not a
   // primitive: such regions are dissolved and their faces split between the neighbours.
   scale.min_curvature_radius =
       std::sqrt(double(scale.seed_patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
-  // Roughness is measured on patches of a fixed share of the surface, so that the estimate does not depend
-  // on the resolution and sees noise that is correlated over more than a seed patch (CT scans).
+  // The scan's roughness is the mesh's, not this segmentation's: the same estimate (patches of a fixed share
+  // of the surface) that the attribute keeps and the fit filters measure, whatever the seed patch size.
   const double roughness =
-      params.roughness > 0 ? params.roughness
-                           : estimate_surface_roughness(g.centroid, g.area, adj,
-                                                        std::max(scale.seed_patch_faces, valid_faces / kRoughnessPatchDivisor));
+      params.roughness > 0 ? params.roughness : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   scale.tolerance = std::isfinite(tol) && tol > 0 ? tol : 0.0;
   clock.lap("roughness");

@@ -7,6 +7,7 @@
 #include "common/mesh/estimate_surface_roughness.h"
 #include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/face_adjacency.h"
+#include "common/mesh/smooth_face_normals.h"
 #include "common/fit/fit_primitive_auto.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,26 @@ TEST(EstimateSurfaceRoughness, NoiseOnCylindersDoesNotGrowWithCurvature)
   const FaceCentroidsAndAreas faces = face_centroids_and_areas(exact);
   EXPECT_LT(measure_surface_roughness(faces.centroid, faces.area, build_face_adjacency(exact)).noise,
             0.1 * sigma / std::sqrt(3.0));
+}
+
+// Threads share the patches and the faces, never a result: every thread count gives the same figures, bit for
+// bit (120k faces: normal smoothing splits them between threads).
+TEST(EstimateSurfaceRoughness, SameOnEveryThreadCount)
+{
+  test_mesh::TMesh m;
+  make_noisy_cylinder(m, 4.0, 0.03, 9);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  const SurfaceRoughness one = measure_surface_roughness(faces.centroid, faces.area, adj, 0, 1);
+  const std::vector<Eigen::Vector3d> normals_one = smooth_face_normals(m, adj, 5, 180.0, 1);
+  for (int threads : {2, 3, 8}) {
+    const SurfaceRoughness many = measure_surface_roughness(faces.centroid, faces.area, adj, 0, threads);
+    EXPECT_EQ(many.noise, one.noise) << threads << " threads";
+    EXPECT_EQ(many.waviness, one.waviness) << threads << " threads";
+    EXPECT_EQ(many.roughness, one.roughness) << threads << " threads";
+    EXPECT_TRUE(smooth_face_normals(m, adj, 5, 180.0, threads) == normals_one) << threads << " threads";
+  }
+  EXPECT_GT(one.noise, 0.0);
 }
 
 TEST(EstimateSurfaceRoughness, ExactPlaneIsSmooth)
