@@ -73,9 +73,13 @@ struct Segmentation
   SegmentByPrimitiveGrowingReport report;
 };
 
-template <class M>
-Segmentation segment(const M& m)
+// The height field built as make_height_field does, segmented at the filter's defaults.
+template <class M, class Height, class Surface>
+Segmentation segment_height_field(const Grid& grid, double noise, Height height, Surface surface,
+                                  std::vector<int>& truth)
 {
+  M m;
+  make_height_field(m, grid, noise, height, surface, truth);
   Segmentation s;
   s.K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), s.segment_of_face, &s.report);
   EXPECT_EQ(s.report.primitive_of_segment.size(), size_t(s.K));
@@ -143,10 +147,8 @@ TYPED_TEST(ScanFeatureTest, SphereCapOnPlane)
   auto surface = [&](double x, double y) { return x * x + y * y < a * a ? 1 : 0; };
   for (const double noise : kNoises) {
     SCOPED_TRACE("noise " + std::to_string(noise));
-    TypeParam m;
     std::vector<int> truth;
-    make_height_field(m, Grid{-6, 6, -6, 6}, noise, height, surface, truth);
-    const Segmentation s = segment(m);
+    const Segmentation s = segment_height_field<TypeParam>(Grid{-6, 6, -6, 6}, noise, height, surface, truth);
     {
       SCOPED_TRACE("plane");
       expect_plane(recovered(s, truth, 0, PrimitiveType::Plane), Eigen::Vector3d::UnitZ(), Eigen::Vector3d(5, 5, 0));
@@ -177,10 +179,8 @@ TYPED_TEST(ScanFeatureTest, Countersink)
   };
   for (const double noise : kNoises) {
     SCOPED_TRACE("noise " + std::to_string(noise));
-    TypeParam m;
     std::vector<int> truth;
-    make_height_field(m, Grid{-8, 8, -8, 8}, noise, height, surface, truth);
-    const Segmentation s = segment(m);
+    const Segmentation s = segment_height_field<TypeParam>(Grid{-8, 8, -8, 8}, noise, height, surface, truth);
     {
       SCOPED_TRACE("top plane");
       expect_plane(recovered(s, truth, 0, PrimitiveType::Plane), Eigen::Vector3d::UnitZ(), Eigen::Vector3d(6, 6, 0));
@@ -228,10 +228,8 @@ TYPED_TEST(ScanFeatureTest, FilletsBetweenPlanes)
   auto surface = [&](double x, double) { return x < 0 ? 0 : x < x1 ? 1 : x < x2 ? 2 : x < x3 ? 3 : 4; };
   for (const double noise : kNoises) {
     SCOPED_TRACE("noise " + std::to_string(noise));
-    TypeParam m;
     std::vector<int> truth;
-    make_height_field(m, Grid{-5, 15, 0, 10}, noise, height, surface, truth);
-    const Segmentation s = segment(m);
+    const Segmentation s = segment_height_field<TypeParam>(Grid{-5, 15, 0, 10}, noise, height, surface, truth);
     {
       SCOPED_TRACE("first plane");
       expect_plane(recovered(s, truth, 0, PrimitiveType::Plane), rising, Eigen::Vector3d(-2, 5, -2));
