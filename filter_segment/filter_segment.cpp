@@ -85,8 +85,11 @@ QString segment_filter_info(int filter)
     return "Splits the mesh into segments by shape: a flood fill over adjacent faces, where two neighbouring "
            "faces join the same segment when the angle between their normals is below <i>Angle</i>. A smaller "
            "angle gives more segments.<br>Raw scans have noisy normals: they are first smoothed over the "
-           "surface, and segments smaller than <i>Min Segment Size</i> are absorbed by the neighbour they "
-           "share the longest border with.<br><br>See: <i>J. Yang, K. Oh, H.-I. Choi</i>, <b>\"Mesh Editing "
+           "surface, by default as much as the measured noise needs; on a noisy scan the fill then stops at "
+           "faces where the smoothed normal turns as across an edge, and those faces go to the neighbouring "
+           "segment with the closest normal. Segments smaller than <i>Min Segment Size</i> (by default a share "
+           "of the faces) are absorbed by the neighbour they share the longest border with.<br><br>"
+           "See: <i>J. Yang, K. Oh, H.-I. Choi</i>, <b>\"Mesh Editing "
            "with an Intuitive User Interface\"</b>, section 2.1." + storage;
   case SegmentFilters::SEGMENT_AUTO_PRIMITIVE:
     return "Splits a scan into segments that each fit one primitive (plane, sphere, cylinder, cone, torus), for "
@@ -145,11 +148,18 @@ void SegmentFilters::parameters(int id, MeshDocument& document, ParameterList& p
                               "Two neighbouring faces join the same segment when the angle between their "
                               "(smoothed) normals is below this. Smaller gives more segments. Range 0-180.");
     parlst.addInt("NormalSmoothing", defaults.smoothing_iterations, "Normal Smoothing Steps",
-                            "Passes of face normal averaging over neighbours before the fill; scans from "
-                            "marching cubes need a few. 0 uses the raw face normals as in the paper.");
+                            "Passes of face normal averaging over neighbours before the fill. -1 (default): "
+                            "automatic: 2 passes on a mesh without measurable noise; on a noisy scan as many "
+                            "as its noise needs (measured against the triangle size), and the fill then stops "
+                            "at faces where the normal turns as across an edge of the Angle; those faces go to "
+                            "the neighbouring segment with the closest normal. 0 to 1000: that many passes "
+                            "that skip neighbours beyond twice the Angle (at most 80 degrees), the paper's "
+                            "method; 0 uses the raw face normals.");
     parlst.addInt("MinSegmentFaces", defaults.min_segment_faces, "Min Segment Size (faces)",
                             "Segments with fewer faces are absorbed by the neighbouring segment they share "
-                            "the longest border with. 0 or 1 keeps every segment.");
+                            "the longest border with. -1 (default): automatic, 1/2000 of the faces (at least "
+                            "30, and after noise-scaled smoothing at least 10 per pass). 0 or 1 keeps every "
+                            "segment.");
     break;
   case SEGMENT_AUTO_PRIMITIVE: {
     const SegmentByPrimitiveGrowingParams growing;
@@ -215,27 +225,24 @@ Status SegmentFilters::autoSegment(MeshModel& mm, const Arguments& parlst, Run& 
   params.angle_deg = parlst.getFloat("Angle");
   params.smoothing_iterations = parlst.getInt("NormalSmoothing");
   params.min_segment_faces = parlst.getInt("MinSegmentFaces");
-  if (!(params.angle_deg > 0 && params.angle_deg < 180))
-    return fail(QString("Segment: Auto by Normal Angle: Angle must be between 0 and 180 degrees, not %1.")
-                    .arg(params.angle_deg));
-  if (params.smoothing_iterations < 0 || params.smoothing_iterations > 1000)
-    return fail(QString("Segment: Auto by Normal Angle: Normal Smoothing Steps must be 0 to 1000, not %1.")
-                    .arg(params.smoothing_iterations));
-  if (params.min_segment_faces < 0)
-    return fail(QString("Segment: Auto by Normal Angle: Min Segment Size must not be negative, not %1.")
-                    .arg(params.min_segment_faces));
+  if (const Status bad = check_normal_angle_params(params); !bad)
+    return fail("Segment: Auto by Normal Angle: " + QString::fromStdString(bad.error));
 
   std::vector<int> before;
   const int segments_before = read_segment_ids(mm.cm, before) ? count_segments(before) : 0;
   QElapsedTimer timer;
   timer.start();
   std::vector<int> segment_of_face;
-  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, run.progress);
+  SegmentByNormalAngleReport report;
+  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, run.progress, &report);
   storeSegments(mm, segment_of_face);
+  const QByteArray noise = report.edge_faces
+      ? QString(" (for noise %1, edge faces handed out after the fill)").arg(report.noise, 0, 'g', 3).toUtf8()
+      : QByteArray();
   run.logf("Segment: Auto by Normal Angle: %d faces split into %d segments (before: %d) at %.1f degrees, "
-      "%d smoothing steps, min size %d faces, in %lld ms.",
-      mm.cm.fn, k, segments_before, params.angle_deg, params.smoothing_iterations, params.min_segment_faces,
-      timer.elapsed());
+      "%d smoothing steps%s, min size %d faces, in %lld ms.",
+      mm.cm.fn, k, segments_before, params.angle_deg, report.smoothing_passes, noise.constData(),
+      report.min_segment_faces, timer.elapsed());
   return Status::success();
 }
 

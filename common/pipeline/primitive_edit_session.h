@@ -137,8 +137,8 @@ public:
   {
     if (const EditOutcome bad = check_mesh(); !bad.status)
       return bad;
-    if (!(params.angle_deg > 0 && params.angle_deg < 180))
-      return EditOutcome::refused("the angle must be between 0 and 180 degrees");
+    if (const Status bad = check_normal_angle_params(params); !bad)
+      return EditOutcome::refused(bad.error);
     std::vector<int> labels;
     const int k = segment_by_normal_angle(*mesh_, adjacency_, params, labels);
     char angle[32];

@@ -225,6 +225,69 @@ TYPED_TEST(SegmentationTest, CappedCylinderGivesThreeSegmentsAtThirtyDegrees)
   EXPECT_EQ(size[2], 64 * 20 * 2);
 }
 
+// A scan-like cube: vertex noise of 0.3 times the edge length tilts each face normal by tens of degrees. The
+// paper's 2 crease-gated passes shatter it; the defaults measure the noise, smooth as much as it needs, stop
+// the fill at the edge faces and give back the 6 sides.
+TYPED_TEST(SegmentationTest, NoisyCubeGivesSixSidesWithDefaults)
+{
+  const int n = 40;
+  TypeParam m;
+  make_grid_cube(m, n);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.3 * 2.0 / n);
+  for (auto& v : m.vert)
+    v.P() += coord<TypeParam>(noise(rng), noise(rng), noise(rng));
+  const FaceAdjacency adj = build_face_adjacency(m);
+
+  std::vector<int> paper;
+  EXPECT_GT(segment_by_normal_angle(m, adj, SegmentByNormalAngleParams{20.0, 2, 30}, paper), 6);
+
+  std::vector<int> seg;
+  SegmentByNormalAngleReport report;
+  const int K = segment_by_normal_angle(m, adj, SegmentByNormalAngleParams{}, seg, {}, &report);
+  expect_valid_segmentation(m, seg, K);
+  EXPECT_TRUE(report.edge_faces);
+  EXPECT_GT(report.smoothing_passes, kPaperSmoothingPasses);
+  EXPECT_GT(report.noise, 0.0);
+  ASSERT_EQ(K, 6);
+  // Faces were built side after side, 2 n^2 each: every side is mostly one segment of its own (edge faces are
+  // split near the middle of each ramp, a face or two off the true edge: a few percent of a 40 x 40 side).
+  const size_t side_faces = size_t(2 * n * n);
+  std::vector<std::vector<int>> count(6, std::vector<int>(6, 0));
+  for (size_t f = 0; f < seg.size(); ++f)
+    ++count[f / side_faces][size_t(seg[f])];
+  std::vector<int> segment_of_side(6);
+  for (size_t side = 0; side < 6; ++side) {
+    const auto best = std::max_element(count[side].begin(), count[side].end());
+    segment_of_side[side] = int(best - count[side].begin());
+    EXPECT_GT(*best, int(0.9 * double(side_faces))) << "side " << side;
+  }
+  std::sort(segment_of_side.begin(), segment_of_side.end());
+  EXPECT_EQ(std::unique(segment_of_side.begin(), segment_of_side.end()), segment_of_side.end());
+
+  std::vector<int> again;
+  EXPECT_EQ(segment_by_normal_angle(m, adj, SegmentByNormalAngleParams{}, again), K);
+  EXPECT_EQ(again, seg) << "not deterministic";
+}
+
+TEST(NormalAngleParams, OutOfRangeValuesAreRefusedByName)
+{
+  EXPECT_TRUE(check_normal_angle_params(SegmentByNormalAngleParams{}).ok());
+  EXPECT_TRUE(check_normal_angle_params(SegmentByNormalAngleParams{20.0, 0, 0}).ok());
+  EXPECT_TRUE(check_normal_angle_params(SegmentByNormalAngleParams{179.0, 1000, 1000000}).ok());
+  const Status angle = check_normal_angle_params(SegmentByNormalAngleParams{0.0, -1, -1});
+  EXPECT_FALSE(angle.ok());
+  EXPECT_NE(angle.error.find("Angle"), std::string::npos);
+  const Status smoothing = check_normal_angle_params(SegmentByNormalAngleParams{20.0, -2, -1});
+  EXPECT_FALSE(smoothing.ok());
+  EXPECT_NE(smoothing.error.find("Normal Smoothing Steps"), std::string::npos);
+  EXPECT_FALSE(check_normal_angle_params(SegmentByNormalAngleParams{20.0, 1001, -1}).ok());
+  const Status size = check_normal_angle_params(SegmentByNormalAngleParams{20.0, -1, -2});
+  EXPECT_FALSE(size.ok());
+  EXPECT_NE(size.error.find("Min Segment Size"), std::string::npos);
+  EXPECT_FALSE(check_normal_angle_params(SegmentByNormalAngleParams{std::nan(""), -1, -1}).ok());
+}
+
 TYPED_TEST(SegmentationTest, SphereGivesOneSegment)
 {
   TypeParam m;
