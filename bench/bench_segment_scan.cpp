@@ -17,6 +17,8 @@
 // true types.
 // --method 0|1|2 starts the fits of given types as FitMethod says (0 refined starts, 1 the paper's direct fit,
 // 2 direct then refined; fit_result.h): with --labels and --types, the direct fit on the true segments.
+// --repair 0 holds folded faces back without first sliding vertices along their surfaces (SnapOptions::repair_folds);
+// --prevent-flips 0 leaves folds as they are (their area is printed either way).
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
@@ -118,6 +120,7 @@ int main(int argc, char** argv)
   int runs = 3;
   double fit_tolerance = 0;
   bool relations = true;
+  bool repair = true, prevent_flips = true;
   primitive_edit::RelationOptions relation_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   int method = 0;
@@ -134,6 +137,10 @@ int main(int argc, char** argv)
       params.smoothing_iterations = std::atoi(argv[++i]);
     else if (a == "--fit-tolerance" && has_value)
       fit_tolerance = std::atof(argv[++i]);
+    else if (a == "--repair" && has_value)
+      repair = std::atoi(argv[++i]) != 0;
+    else if (a == "--prevent-flips" && has_value)
+      prevent_flips = std::atoi(argv[++i]) != 0;
     else if (a == "--relations" && has_value)
       relations = std::atoi(argv[++i]) != 0;
     else if (a == "--relation-angle" && has_value)
@@ -162,7 +169,7 @@ int main(int argc, char** argv)
   if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
       method >= primitive_edit::kFitMethodCount) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
+                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -221,6 +228,8 @@ int main(int argc, char** argv)
   fit_all.relations = relations;
   fit_all.relation_options = relation_options;
   fit_all.snap = true;
+  fit_all.snap_options.repair_folds = repair;
+  fit_all.snap_options.prevent_flips = prevent_flips;
   const FitAllSegmentsResult result = fit_all_segments(m, segment_of_face, fit_all);
   if (!result.status) {
     std::fprintf(stderr, "bench_segment_scan: %s\n", result.status.error.c_str());
@@ -235,9 +244,10 @@ int main(int argc, char** argv)
     std::printf("\n");
   }
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner, "
-              "%d reverted)\n",
+              "%d slid to unfold faces, %d held back), %d faces left folded (area %.4g)\n",
               result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
-              snap.corner_vertices, snap.reverted_vertices);
+              snap.corner_vertices, snap.repaired_vertices, snap.reverted_vertices, snap.folded_faces,
+              snap.folded_area);
   if (!fits_path.empty()) {
     std::ofstream out(fits_path);
     write_fits_json(out, result, scan_path, true);

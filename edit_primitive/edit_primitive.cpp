@@ -4,6 +4,7 @@
 
 #include "common/base/describe_primitive.h"
 #include "common/geometry/primitive_wireframe.h"
+#include "common/snap/describe_snap_report.h"
 
 #include <common/GLExtensionsManager.h>
 #include <meshlab/glarea.h>
@@ -314,12 +315,8 @@ void EditPrimitivePlugin::apply()
     outcome = session_.apply(true, true);
   }
   if (outcome.status.ok()) {
-    const SnapReport& r = outcome.report;
     report(true, what,
-           "snapped onto " + outcome.summary + "; " + std::to_string(r.moved_vertices) + " vertices moved (" +
-               std::to_string(r.edge_vertices) + " onto edges, " + std::to_string(r.corner_vertices) +
-               " onto corners, " + std::to_string(r.reverted_vertices) + " held back), max displacement " +
-               QString::number(r.max_displacement, 'g', 4).toStdString());
+           "snapped onto " + outcome.summary + "; " + describe_snap_report(outcome.report));
     model_->setMeshModified();
   } else {
     report(false, what, outcome.status.error);

@@ -13,6 +13,7 @@
 #include "common/pipeline/snap_onto_primitive.h"
 #include "common/pipeline/write_fits_json.h"
 #include "common/relate/describe_relation.h"
+#include "common/snap/describe_snap_report.h"
 #include "meshlab_api/load_segments.h"
 
 #include <QFile>
@@ -50,10 +51,7 @@ QString primitive_filter_name(int filter)
 
 QString snap_summary(const SnapReport& r)
 {
-  return QString("%1 vertices moved (%2 onto edges, %3 onto corners, %4 held back to keep triangles from "
-                 "flipping), mean displacement %5, max %6")
-      .arg(r.moved_vertices).arg(r.edge_vertices).arg(r.corner_vertices).arg(r.reverted_vertices)
-      .arg(r.mean_displacement, 0, 'g', 4).arg(r.max_displacement, 0, 'g', 4);
+  return QString::fromStdString(describe_snap_report(r));
 }
 
 } // namespace

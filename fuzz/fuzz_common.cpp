@@ -8,7 +8,8 @@
 // measurement. Sizes are bounded (<= 2000 faces, few fitted segments, few LM iterations) so that an input runs
 // in milliseconds. Invariants are checked and violations abort (libFuzzer then saves the input):
 // dense segment ids with every live face labelled, fits with ok == true give valid primitives with finite
-// residuals, snap_segments never writes a non-finite coordinate nor moves a vertex of an unsnapped segment,
+// residuals, snap_segments never writes a non-finite coordinate nor moves a vertex of an unsnapped segment (but
+// to repair a fold) nor leaves a fold with flip prevention on,
 // accuracy reports are finite.
 #include "common/base/constants.h"
 #include "common/geometry/closest_point_on_intersection.h"
@@ -209,6 +210,7 @@ Params decode_params(Decoder& in)
   p.snap.sharp_edges = !in.bit();
   p.snap.max_edge_distance = in.special(1.0);
   p.snap.prevent_flips = !in.bit();
+  p.snap.repair_folds = !in.bit();
   p.tolerance = in.special(0.2);
   p.sample_count = int(in.u16() % 600) - 10;
   p.seed = in.u32();
@@ -578,7 +580,8 @@ void run(Decoder& in)
   }
 
   // Snap (every segment with a primitive, or one segment as the edit tool's Apply does): no vertex may become
-  // non-finite; vertices not on a snapped segment stay where they are.
+  // non-finite; vertices not on a snapped segment stay where they are, unless the fold repair slid them;
+  // with flip prevention no face is left folded.
   int target = -1;
   Primitive target_primitive;
   if (K > 0 && in.bit()) {
@@ -617,9 +620,13 @@ void run(Decoder& in)
         FUZZ_CHECK(std::isfinite(double(p[0])) && std::isfinite(double(p[1])) && std::isfinite(double(p[2])));
       else
         FUZZ_CHECK(std::memcmp(&p, &before[v], sizeof p) == 0);
-      if (!on_snapped[v])
+      if (!on_snapped[v] && report.repaired_vertices == 0)
         FUZZ_CHECK(std::memcmp(&p, &before[v], sizeof p) == 0);
     }
+    if (params.snap.prevent_flips)
+      FUZZ_CHECK(report.folded_faces == 0);
+    else
+      FUZZ_CHECK(report.repaired_vertices == 0 && report.reverted_vertices == 0);
   }
 
   // Accuracy: sample the mesh, measure against itself and against fuzzed points.

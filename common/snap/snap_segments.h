@@ -11,24 +11,34 @@
 //         intersection (sharp_edges, within max_edge_distance) or else to the nearer of its two
 //         projections; on three or more, to their common point, else to the intersection of the two
 //         nearest surfaces, else to the nearest projection. Vertices of unsnapped segments only are
-//         untouched. Triangles do not flip: a live face whose normal turns by more than 90 degrees or
-//         whose area collapses (below 1e-3 of its original) makes one of its moved vertices (the most
-//         snapped, then the most displaced) fall back one step (edge/corner -> single projection ->
-//         original position), repeated until no face flips (reverted_vertices counts them). A
-//         non-finite target leaves the vertex where it is; non-finite vertices are never moved.
+//         untouched, except near a fold (below). Triangles do not flip (prevent_flips): a live face whose
+//         normal turns by more than 90 degrees or whose area collapses (below 1e-3 of its original) is
+//         first repaired (repair_folds, with repair_folds on): vertices near it slide along their
+//         primitive or edge, and vertices of unsnapped faces along their tangent plane, until it unfolds
+//         (repaired_vertices counts them). Where a fold remains, one of its moved vertices (the most
+//         snapped, then the most displaced) falls back one step (edge/corner -> single projection ->
+//         original position), repeated until no face flips (reverted_vertices counts them). Corners,
+//         vertices on the mesh's border, on a crease of unsnapped faces or on the border of a segment
+//         (but along the edge of two primitives) never slide. folded_faces and
+//         folded_area give what is left folded (zero with prevent_flips). A non-finite target leaves the
+//         vertex where it is; non-finite vertices are never moved.
 //         Face and vertex normals are NOT updated: that is the caller's job
 //         (vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized / PerVertexNormalizedPerFace).
 // Needs:  only the face-vertex lists (no VF/FF topology): a vertex -> face table is built by counting
-//         sort.
-// Cost:   O(V + F) plus O(1) math per vertex; each fall-back round only revisits the faces around the
-//         vertices that moved back.
+//         sort (vertex_faces.h).
+// Cost:   O(V + F) plus O(1) math per vertex; the repair visits only the faces around the folds (see
+//         repair_folds.h); each fall-back round only revisits the faces around the vertices that moved back.
 #ifndef PRIMITIVE_EDIT_SNAP_SEGMENTS_H
 #define PRIMITIVE_EDIT_SNAP_SEGMENTS_H
 
 #include "common/geometry/closest_point_on_intersection.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/geometry/common_point_of_primitives.h"
+#include "common/base/constants.h"
 #include "common/base/primitive.h"
+#include "common/mesh/face_adjacency.h"
+#include "common/mesh/vertex_faces.h"
+#include "common/snap/repair_folds.h"
 
 #include <vcg/complex/complex.h>
 
@@ -51,265 +61,451 @@ struct SnapOptions
   // How far a shared vertex may travel to reach an edge/corner; <= 0: 5x the mean edge length of the mesh.
   double max_edge_distance = 0;
   bool prevent_flips = true;
+  // With prevent_flips: slide vertices along their surfaces to unfold faces before holding any back.
+  bool repair_folds = true;
 };
 
 struct SnapReport
 {
   int moved_vertices = 0, edge_vertices = 0, corner_vertices = 0, reverted_vertices = 0;
+  int repaired_vertices = 0; // slid along their surface to unfold faces
+  int folded_faces = 0;      // left folded (normal turned over or area collapsed); 0 with prevent_flips
+  double folded_area = 0;    // their area before snapping
   double mean_displacement = 0, max_displacement = 0;
 };
+
+namespace snap_detail {
+
+// The phases of snap_segments over one mesh; the public function below runs them in order.
+template <class MeshType>
+class Snapper
+{
+  using CoordType = typename MeshType::CoordType;
+  using ScalarType = typename MeshType::ScalarType;
+  // kSlid: a vertex of unsnapped faces only, moved by the repair.
+  enum Kind : std::uint8_t { kUntouched, kSingle, kEdge, kCorner, kSlid };
+
+public:
+  Snapper(MeshType& m, const std::vector<int>& segment_of_face,
+          const std::vector<std::optional<Primitive>>& primitive_of_segment, const SnapOptions& options)
+      : m_(m), segment_of_face_(segment_of_face), primitive_of_segment_(primitive_of_segment), options_(options)
+  {
+  }
+
+  SnapReport run()
+  {
+    if (m_.vert.empty() || m_.face.empty())
+      return report_;
+    group_equal_primitives();
+    build_tables();
+    place_on_targets();
+    if (options_.prevent_flips && options_.repair_folds)
+      repair();
+    if (options_.prevent_flips)
+      hold_back();
+    summarize();
+    return report_;
+  }
+
+private:
+  static Eigen::Vector3d to_eigen(const CoordType& c) { return {double(c[0]), double(c[1]), double(c[2])}; }
+  static CoordType to_coord(const Eigen::Vector3d& e)
+  {
+    return CoordType(ScalarType(e.x()), ScalarType(e.y()), ScalarType(e.z()));
+  }
+  // A finite double can still overflow a float coordinate.
+  static bool representable(const Eigen::Vector3d& e)
+  {
+    return e.allFinite() && e.cwiseAbs().maxCoeff() < double(std::numeric_limits<ScalarType>::max());
+  }
+
+  // Segments with identical primitives are one surface for the vertices they share: map every snapped
+  // segment to a group of equal primitives (sorting keeps this O(S log S)).
+  void group_equal_primitives()
+  {
+    auto key = [](const Primitive& q) {
+      return std::make_tuple(int(q.type), q.origin.x(), q.origin.y(), q.origin.z(), q.axis.x(), q.axis.y(),
+                             q.axis.z(), q.radius, q.minor_radius, q.half_angle);
+    };
+    const int ns = static_cast<int>(primitive_of_segment_.size());
+    group_of_segment_.assign(std::size_t(ns), -1);
+    std::vector<int> order;
+    for (int s = 0; s < ns; ++s)
+      if (primitive_of_segment_[std::size_t(s)] && primitive_is_valid(*primitive_of_segment_[std::size_t(s)]))
+        order.push_back(s);
+    auto prim = [&](int s) -> const Primitive& { return *primitive_of_segment_[std::size_t(s)]; };
+    std::sort(order.begin(), order.end(),
+              [&](int x, int y) { return std::make_pair(key(prim(x)), x) < std::make_pair(key(prim(y)), y); });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (i == 0 || key(prim(order[i])) != key(prim(order[i - 1])))
+        group_primitive_.push_back(&prim(order[i]));
+      group_of_segment_[std::size_t(order[i])] = static_cast<int>(group_primitive_.size()) - 1;
+    }
+  }
+
+  int group_of_face(std::size_t fi) const
+  {
+    if (fi >= segment_of_face_.size())
+      return -1;
+    const int s = segment_of_face_[fi];
+    return (s >= 0 && s < int(group_of_segment_.size())) ? group_of_segment_[std::size_t(s)] : -1;
+  }
+
+  // Vertex -> live faces, each face's edge cross product before snapping, the original positions and the
+  // mean edge length for the automatic edge distance.
+  void build_tables()
+  {
+    const std::size_t nv = m_.vert.size(), nf = m_.face.size();
+    face_vertex_ = detail::face_vertex_indices(m_);
+    vertex_faces_ = build_vertex_faces(face_vertex_, nv);
+    original_.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      original_[v] = m_.vert[v].cP();
+    reference_.assign(nf, Eigen::Vector3d::Zero());
+    double edge_sum = 0;
+    std::size_t edge_count = 0;
+    for (std::size_t f = 0; f < nf; ++f) {
+      const int* c = &face_vertex_[3 * f];
+      if (c[0] < 0)
+        continue;
+      const Eigen::Vector3d p0 = rest(c[0]), p1 = rest(c[1]), p2 = rest(c[2]);
+      reference_[f] = (p1 - p0).cross(p2 - p0);
+      for (const double len : {(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()})
+        if (std::isfinite(len)) {
+          edge_sum += len;
+          ++edge_count;
+        }
+    }
+    max_edge_distance_ = options_.max_edge_distance > 0
+                             ? options_.max_edge_distance
+                             : (edge_count > 0 ? 5.0 * edge_sum / double(edge_count) : 0.0);
+  }
+
+  Eigen::Vector3d rest(int v) const { return to_eigen(original_[std::size_t(v)]); }
+  Eigen::Vector3d now(int v) const { return to_eigen(m_.vert[std::size_t(v)].cP()); }
+
+  // The distinct primitive groups of vertex v, sorted.
+  void gather(std::size_t v, std::vector<int>& groups) const
+  {
+    groups.clear();
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i) {
+      const int g = group_of_face(std::size_t(vertex_faces_.face[std::size_t(i)]));
+      if (g >= 0)
+        groups.push_back(g);
+    }
+    std::sort(groups.begin(), groups.end());
+    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  }
+
+  // Projection onto the nearest of the given primitives (used alone and as the fall-back of edges/corners).
+  Eigen::Vector3d nearest_projection(const std::vector<int>& groups, const Eigen::Vector3d& p) const
+  {
+    PrimitiveProjection best = project_onto_primitive(*group_primitive_[std::size_t(groups[0])], p);
+    for (std::size_t i = 1; i < groups.size(); ++i) {
+      const PrimitiveProjection pr = project_onto_primitive(*group_primitive_[std::size_t(groups[i])], p);
+      if (std::abs(pr.signed_distance) < std::abs(best.signed_distance))
+        best = pr;
+    }
+    return best.point;
+  }
+
+  // The edge or corner of three or more primitives nearest to p, if one is within reach.
+  bool corner_or_edge(const std::vector<int>& groups, const Eigen::Vector3d& p, Eigen::Vector3d& target,
+                      Kind& kind) const
+  {
+    std::vector<const Primitive*> prims;
+    for (int g : groups)
+      prims.push_back(group_primitive_[std::size_t(g)]);
+    if (common_point_of_primitives(prims, p, max_edge_distance_, target)) {
+      kind = kCorner;
+      return true;
+    }
+    std::vector<std::pair<double, int>> by_distance;
+    for (int g : groups)
+      by_distance.emplace_back(std::abs(signed_distance_to_primitive(*group_primitive_[std::size_t(g)], p)), g);
+    std::partial_sort(by_distance.begin(), by_distance.begin() + 2, by_distance.end());
+    kind = kEdge;
+    return closest_point_on_intersection(*group_primitive_[std::size_t(by_distance[0].second)],
+                                         *group_primitive_[std::size_t(by_distance[1].second)], p,
+                                         max_edge_distance_, target);
+  }
+
+  void place_on_targets()
+  {
+    const std::size_t nv = m_.vert.size();
+    kind_.assign(nv, kUntouched);
+    stage_.assign(nv, 2);
+    std::vector<int> groups;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (m_.vert[v].IsD())
+        continue;
+      gather(v, groups);
+      const Eigen::Vector3d p = rest(int(v));
+      if (groups.empty() || !p.allFinite())
+        continue;
+      Eigen::Vector3d target;
+      Kind k = kSingle;
+      if (options_.sharp_edges && groups.size() == 2 &&
+          closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
+                                        *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, target))
+        k = kEdge;
+      else if (!(options_.sharp_edges && groups.size() >= 3 && corner_or_edge(groups, p, target, k)))
+        k = kSingle;
+      if (k == kSingle)
+        target = nearest_projection(groups, p);
+      if (!representable(target))
+        continue;
+      kind_[v] = k;
+      stage_[v] = 0;
+      m_.vert[v].P() = to_coord(target);
+    }
+  }
+
+  // Whether the repair may slide vertex v: not a corner, not on the mesh's border nor a non-manifold edge
+  // (a neighbour met once or more than twice around it), not on a segment's border unless on the edge of two
+  // primitives, and for a vertex of unsnapped faces, not on a crease.
+  bool slidable(std::size_t v) const
+  {
+    if (m_.vert[v].IsD() || stage_[v] != (kind_[v] == kUntouched ? 2 : 0) || kind_[v] == kCorner ||
+        !rest(int(v)).allFinite())
+      return false;
+    std::vector<int> around;
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int u = face_vertex_[3 * std::size_t(vertex_faces_.face[std::size_t(i)]) + std::size_t(j)];
+        if (std::size_t(u) != v)
+          around.push_back(u);
+      }
+    std::sort(around.begin(), around.end());
+    for (std::size_t i = 0; i < around.size();) {
+      std::size_t j = i;
+      while (j < around.size() && around[j] == around[i])
+        ++j;
+      if (j - i != 2)
+        return false;
+      i = j;
+    }
+    if (around.empty())
+      return false;
+    if (kind_[v] == kUntouched)
+      return tangent_of_unsnapped(v).has_value();
+    std::vector<int> groups;
+    gather(v, groups);
+    if (kind_[v] == kEdge)
+      return groups.size() == 2;
+    // A vertex on one primitive slides only inside its segment: on the border with unsnapped faces it
+    // would carry the border along the primitive.
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i)
+      if (group_of_face(std::size_t(vertex_faces_.face[std::size_t(i)])) != groups[0])
+        return false;
+    return true;
+  }
+
+  // The unit normal at a vertex of unsnapped faces, or nothing on a crease (faces more than 30 degrees
+  // from it), where sliding in a plane would cut the corner. Faces touching a snapped vertex are left out
+  // when others remain: they are the blurred band the snap reshapes, not the surface the vertex lies on.
+  std::optional<Eigen::Vector3d> tangent_of_unsnapped(std::size_t v) const
+  {
+    auto untouched = [&](int f) {
+      const int* c = &face_vertex_[3 * std::size_t(f)];
+      return kind_[std::size_t(c[0])] == kUntouched && kind_[std::size_t(c[1])] == kUntouched &&
+             kind_[std::size_t(c[2])] == kUntouched;
+    };
+    bool any_untouched = false;
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i)
+      any_untouched = any_untouched || untouched(vertex_faces_.face[std::size_t(i)]);
+    auto counts = [&](int f) { return !any_untouched || untouched(f); };
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i)
+      if (counts(vertex_faces_.face[std::size_t(i)]))
+        n += reference_[std::size_t(vertex_faces_.face[std::size_t(i)])];
+    if (!(n.norm() > 0) || !n.allFinite())
+      return std::nullopt;
+    n.normalize();
+    const double cos_crease = std::cos(radians_from_degrees(30.0));
+    for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i) {
+      const int f = vertex_faces_.face[std::size_t(i)];
+      const Eigen::Vector3d& r = reference_[std::size_t(f)];
+      if (counts(f) && (!(r.norm() > 0) || r.dot(n) < cos_crease * r.norm()))
+        return std::nullopt;
+    }
+    return n;
+  }
+
+  // Puts p onto the surface vertex v was snapped to (its tangent plane for unsnapped faces).
+  bool constrain(std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) const
+  {
+    std::vector<int> groups;
+    gather(v, groups);
+    if (kind_[v] == kEdge)
+      return closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
+                                           *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, out);
+    if (kind_[v] == kSingle) {
+      out = nearest_projection(groups, p);
+      return true;
+    }
+    const std::optional<Eigen::Vector3d> n = tangent_of_unsnapped(v);
+    if (!n)
+      return false;
+    const Eigen::Vector3d o = rest(int(v));
+    out = p - n->dot(p - o) * *n;
+    return true;
+  }
+
+  void repair()
+  {
+    const std::size_t nv = m_.vert.size();
+    std::vector<Eigen::Vector3d> position(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      position[v] = now(int(v));
+    const std::vector<Eigen::Vector3d> snapped = position;
+    const RepairFoldsReport r = repair_folds(
+        position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
+        [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); });
+    if (r.rounds == 0)
+      return;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (position[v] == snapped[v] || !representable(position[v]))
+        continue;
+      m_.vert[v].P() = to_coord(position[v]);
+      if (kind_[v] == kUntouched) {
+        kind_[v] = kSlid;
+        stage_[v] = 0;
+      }
+      ++report_.repaired_vertices;
+    }
+  }
+
+  bool face_is_bad(std::size_t f) const
+  {
+    const int* c = &face_vertex_[3 * f];
+    if (c[0] < 0 || (stage_[std::size_t(c[0])] == 2 && stage_[std::size_t(c[1])] == 2 && stage_[std::size_t(c[2])] == 2))
+      return false;
+    return face_is_folded(reference_[f], now(c[0]), now(c[1]), now(c[2]));
+  }
+
+  // The vertex of face f to fall back: the most snapped (edge/corner before single), then the most displaced.
+  int vertex_to_fall_back(std::size_t f) const
+  {
+    int chosen = -1;
+    std::pair<int, double> chosen_key(-1, 0.0);
+    for (int j = 0; j < 3; ++j) {
+      const std::size_t v = std::size_t(face_vertex_[3 * f + std::size_t(j)]);
+      if (stage_[v] == 2)
+        continue;
+      const int level = (stage_[v] == 0 && (kind_[v] == kEdge || kind_[v] == kCorner)) ? 1 : 0;
+      const std::pair<int, double> key(level, (now(int(v)) - rest(int(v))).norm());
+      if (chosen < 0 || key > chosen_key) {
+        chosen = static_cast<int>(v);
+        chosen_key = key;
+      }
+    }
+    return chosen;
+  }
+
+  // One step back: edge/corner -> single projection of the original position -> original position.
+  void fall_back(std::size_t v)
+  {
+    if (stage_[v] == 0 && (kind_[v] == kEdge || kind_[v] == kCorner)) {
+      std::vector<int> groups;
+      gather(v, groups);
+      const Eigen::Vector3d target = nearest_projection(groups, rest(int(v)));
+      if (representable(target)) {
+        stage_[v] = 1;
+        m_.vert[v].P() = to_coord(target);
+        return;
+      }
+    }
+    stage_[v] = 2;
+    m_.vert[v].P() = original_[v];
+  }
+
+  void hold_back()
+  {
+    const std::size_t nv = m_.vert.size(), nf = m_.face.size();
+    std::vector<int> candidates;
+    for (std::size_t f = 0; f < nf; ++f)
+      if (face_vertex_[3 * f] >= 0)
+        candidates.push_back(static_cast<int>(f));
+    std::vector<std::uint8_t> reverted(nv, 0), drop(nv, 0);
+    std::vector<int> dropped;
+    std::vector<int> face_mark(nf, -1);
+    for (int round = 0; !candidates.empty(); ++round) {
+      dropped.clear();
+      for (int f : candidates) {
+        if (!face_is_bad(std::size_t(f)))
+          continue;
+        const int chosen = vertex_to_fall_back(std::size_t(f));
+        if (chosen >= 0 && !drop[std::size_t(chosen)]) {
+          drop[std::size_t(chosen)] = 1;
+          dropped.push_back(chosen);
+        }
+      }
+      for (int vi : dropped) {
+        drop[std::size_t(vi)] = 0;
+        reverted[std::size_t(vi)] = 1;
+        fall_back(std::size_t(vi));
+      }
+      candidates.clear();
+      for (int vi : dropped)
+        for (int i = vertex_faces_.offset[std::size_t(vi)]; i < vertex_faces_.offset[std::size_t(vi) + 1]; ++i) {
+          const int f = vertex_faces_.face[std::size_t(i)];
+          if (face_mark[std::size_t(f)] != round) {
+            face_mark[std::size_t(f)] = round;
+            candidates.push_back(f);
+          }
+        }
+    }
+    report_.reverted_vertices = static_cast<int>(std::count(reverted.begin(), reverted.end(), std::uint8_t(1)));
+  }
+
+  void summarize()
+  {
+    double displacement_sum = 0;
+    for (std::size_t v = 0; v < m_.vert.size(); ++v) {
+      if (kind_[v] == kUntouched || stage_[v] == 2)
+        continue;
+      ++report_.moved_vertices;
+      if (stage_[v] == 0 && kind_[v] == kEdge)
+        ++report_.edge_vertices;
+      if (stage_[v] == 0 && kind_[v] == kCorner)
+        ++report_.corner_vertices;
+      const double d = (now(int(v)) - rest(int(v))).norm();
+      displacement_sum += d;
+      report_.max_displacement = std::max(report_.max_displacement, d);
+    }
+    if (report_.moved_vertices > 0)
+      report_.mean_displacement = displacement_sum / report_.moved_vertices;
+    for (std::size_t f = 0; f < m_.face.size(); ++f)
+      if (face_is_bad(f)) {
+        ++report_.folded_faces;
+        report_.folded_area += 0.5 * reference_[f].norm();
+      }
+  }
+
+  MeshType& m_;
+  const std::vector<int>& segment_of_face_;
+  const std::vector<std::optional<Primitive>>& primitive_of_segment_;
+  const SnapOptions& options_;
+  SnapReport report_;
+  std::vector<int> group_of_segment_;
+  std::vector<const Primitive*> group_primitive_;
+  std::vector<int> face_vertex_;
+  VertexFaces vertex_faces_;
+  std::vector<CoordType> original_;
+  std::vector<Eigen::Vector3d> reference_;
+  double max_edge_distance_ = 0;
+  std::vector<std::uint8_t> kind_, stage_;
+};
+
+} // namespace snap_detail
 
 template <class MeshType>
 SnapReport snap_segments(MeshType& m, const std::vector<int>& segment_of_face,
                          const std::vector<std::optional<Primitive>>& primitive_of_segment,
                          const SnapOptions& options = {})
 {
-  using CoordType = typename MeshType::CoordType;
-  using ScalarType = typename MeshType::ScalarType;
-  SnapReport report;
-  const size_t nv = m.vert.size();
-  const size_t nf = m.face.size();
-  if (nv == 0 || nf == 0)
-    return report;
-
-  auto to_eigen = [](const CoordType& c) { return Eigen::Vector3d(double(c[0]), double(c[1]), double(c[2])); };
-  auto to_coord = [](const Eigen::Vector3d& e) {
-    return CoordType(ScalarType(e.x()), ScalarType(e.y()), ScalarType(e.z()));
-  };
-  // A finite double can still overflow a float coordinate.
-  auto representable = [](const Eigen::Vector3d& e) {
-    return e.allFinite() && e.cwiseAbs().maxCoeff() < double(std::numeric_limits<ScalarType>::max());
-  };
-
-  // Segments with identical primitives are one surface for the vertices they share: map every snapped
-  // segment to a group of equal primitives (sorting keeps this O(S log S)).
-  const int ns = static_cast<int>(primitive_of_segment.size());
-  std::vector<int> group_of_segment(ns, -1);
-  std::vector<const Primitive*> group_primitive;
-  {
-    auto key = [](const Primitive& q) {
-      return std::make_tuple(int(q.type), q.origin.x(), q.origin.y(), q.origin.z(), q.axis.x(), q.axis.y(),
-                             q.axis.z(), q.radius, q.minor_radius, q.half_angle);
-    };
-    std::vector<int> order;
-    for (int s = 0; s < ns; ++s)
-      if (primitive_of_segment[s] && primitive_is_valid(*primitive_of_segment[s]))
-        order.push_back(s);
-    std::sort(order.begin(), order.end(), [&](int x, int y) {
-      return std::make_pair(key(*primitive_of_segment[x]), x) < std::make_pair(key(*primitive_of_segment[y]), y);
-    });
-    for (size_t i = 0; i < order.size(); ++i) {
-      const Primitive& q = *primitive_of_segment[order[i]];
-      if (i == 0 || key(q) != key(*primitive_of_segment[order[i - 1]]))
-        group_primitive.push_back(&q);
-      group_of_segment[order[i]] = static_cast<int>(group_primitive.size()) - 1;
-    }
-  }
-  auto group_of_face = [&](size_t fi) {
-    if (fi >= segment_of_face.size())
-      return -1;
-    const int s = segment_of_face[fi];
-    return (s >= 0 && s < ns) ? group_of_segment[s] : -1;
-  };
-
-  // Vertex -> live faces, by counting sort (CSR); also the mean edge length for the automatic distance.
-  std::vector<int> offset(nv + 1, 0);
-  double edge_sum = 0;
-  size_t edge_count = 0;
-  for (size_t fi = 0; fi < nf; ++fi) {
-    const auto& f = m.face[fi];
-    if (f.IsD())
-      continue;
-    for (int j = 0; j < 3; ++j) {
-      ++offset[vcg::tri::Index(m, f.cV(j)) + 1];
-      const double len = double(vcg::Distance(f.cP(j), f.cP((j + 1) % 3)));
-      if (std::isfinite(len)) {
-        edge_sum += len;
-        ++edge_count;
-      }
-    }
-  }
-  for (size_t v = 0; v < nv; ++v)
-    offset[v + 1] += offset[v];
-  std::vector<int> incident(static_cast<size_t>(offset[nv]));
-  {
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (size_t fi = 0; fi < nf; ++fi) {
-      const auto& f = m.face[fi];
-      if (f.IsD())
-        continue;
-      for (int j = 0; j < 3; ++j)
-        incident[static_cast<size_t>(fill[vcg::tri::Index(m, f.cV(j))]++)] = static_cast<int>(fi);
-    }
-  }
-  const double max_edge_distance =
-      options.max_edge_distance > 0 ? options.max_edge_distance
-                                    : (edge_count > 0 ? 5.0 * edge_sum / double(edge_count) : 0.0);
-
-  // The distinct primitive groups of vertex v, sorted.
-  auto gather = [&](size_t v, std::vector<int>& groups) {
-    groups.clear();
-    for (int i = offset[v]; i < offset[v + 1]; ++i) {
-      const int g = group_of_face(static_cast<size_t>(incident[i]));
-      if (g >= 0)
-        groups.push_back(g);
-    }
-    std::sort(groups.begin(), groups.end());
-    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
-  };
-  // Projection onto the nearest of the given primitives (used alone and as the fall-back of edges/corners).
-  auto nearest_projection = [&](const std::vector<int>& groups, const Eigen::Vector3d& p) {
-    PrimitiveProjection best = project_onto_primitive(*group_primitive[groups[0]], p);
-    for (size_t i = 1; i < groups.size(); ++i) {
-      const PrimitiveProjection pr = project_onto_primitive(*group_primitive[groups[i]], p);
-      if (std::abs(pr.signed_distance) < std::abs(best.signed_distance))
-        best = pr;
-    }
-    return best.point;
-  };
-
-  enum Kind : std::uint8_t { kUntouched, kSingle, kEdge, kCorner };
-  // stage 0: at the target of its kind, 1: single projection (edges/corners only), 2: original position.
-  std::vector<std::uint8_t> kind(nv, kUntouched), stage(nv, 2);
-  std::vector<CoordType> original(nv);
-  std::vector<int> groups;
-  std::vector<const Primitive*> prims;
-  std::vector<std::pair<double, int>> by_distance;
-  for (size_t v = 0; v < nv; ++v) {
-    original[v] = m.vert[v].cP();
-    if (m.vert[v].IsD())
-      continue;
-    gather(v, groups);
-    if (groups.empty())
-      continue;
-    const Eigen::Vector3d p = to_eigen(original[v]);
-    if (!p.allFinite())
-      continue;
-    Eigen::Vector3d target;
-    Kind k = kSingle;
-    if (options.sharp_edges && groups.size() == 2 &&
-        closest_point_on_intersection(*group_primitive[groups[0]], *group_primitive[groups[1]], p,
-                                      max_edge_distance, target)) {
-      k = kEdge;
-    } else if (options.sharp_edges && groups.size() >= 3) {
-      prims.clear();
-      for (int g : groups)
-        prims.push_back(group_primitive[g]);
-      if (common_point_of_primitives(prims, p, max_edge_distance, target)) {
-        k = kCorner;
-      } else {
-        by_distance.clear();
-        for (int g : groups)
-          by_distance.emplace_back(std::abs(signed_distance_to_primitive(*group_primitive[g], p)), g);
-        std::partial_sort(by_distance.begin(), by_distance.begin() + 2, by_distance.end());
-        if (closest_point_on_intersection(*group_primitive[by_distance[0].second],
-                                          *group_primitive[by_distance[1].second], p, max_edge_distance, target))
-          k = kEdge;
-      }
-    }
-    if (k == kSingle)
-      target = nearest_projection(groups, p);
-    if (!representable(target))
-      continue;
-    kind[v] = k;
-    stage[v] = 0;
-    m.vert[v].P() = to_coord(target);
-  }
-
-  if (options.prevent_flips) {
-    // A face is bad when its normal turned by more than 90 degrees or its area (nearly) vanished; faces
-    // that had no normal to begin with (degenerate or non-finite) cannot flip.
-    auto face_is_bad = [&](size_t fi) {
-      const auto& f = m.face[fi];
-      const size_t i0 = vcg::tri::Index(m, f.cV(0)), i1 = vcg::tri::Index(m, f.cV(1)),
-                   i2 = vcg::tri::Index(m, f.cV(2));
-      if (stage[i0] == 2 && stage[i1] == 2 && stage[i2] == 2)
-        return false;
-      const Eigen::Vector3d o0 = to_eigen(original[i0]);
-      const Eigen::Vector3d before = (to_eigen(original[i1]) - o0).cross(to_eigen(original[i2]) - o0);
-      const double before_norm = before.norm();
-      if (!std::isfinite(before_norm) || before_norm <= 0)
-        return false;
-      const Eigen::Vector3d n0 = to_eigen(f.cP(0));
-      const Eigen::Vector3d after = (to_eigen(f.cP(1)) - n0).cross(to_eigen(f.cP(2)) - n0);
-      return !(before.dot(after) > 0) || !(after.norm() > 1e-3 * before_norm);
-    };
-    std::vector<int> candidates;
-    for (size_t fi = 0; fi < nf; ++fi)
-      if (!m.face[fi].IsD())
-        candidates.push_back(static_cast<int>(fi));
-    std::vector<std::uint8_t> reverted(nv, 0);
-    std::vector<std::uint8_t> drop(nv, 0);
-    std::vector<int> dropped;
-    std::vector<int> face_mark(nf, -1);
-    for (int round = 0; !candidates.empty(); ++round) {
-      dropped.clear();
-      for (int fi : candidates) {
-        if (!face_is_bad(static_cast<size_t>(fi)))
-          continue;
-        // Fall back the most snapped vertex first (edge/corner before single), then the most displaced.
-        const auto& f = m.face[static_cast<size_t>(fi)];
-        int chosen = -1;
-        std::pair<int, double> chosen_key(-1, 0.0);
-        for (int j = 0; j < 3; ++j) {
-          const size_t v = vcg::tri::Index(m, f.cV(j));
-          if (stage[v] == 2)
-            continue;
-          const int level = (stage[v] == 0 && (kind[v] == kEdge || kind[v] == kCorner)) ? 1 : 0;
-          const std::pair<int, double> key(level, double(vcg::Distance(f.cP(j), original[v])));
-          if (chosen < 0 || key > chosen_key) {
-            chosen = static_cast<int>(v);
-            chosen_key = key;
-          }
-        }
-        if (chosen >= 0 && !drop[static_cast<size_t>(chosen)]) {
-          drop[static_cast<size_t>(chosen)] = 1;
-          dropped.push_back(chosen);
-        }
-      }
-      for (int vi : dropped) {
-        const size_t v = static_cast<size_t>(vi);
-        drop[v] = 0;
-        reverted[v] = 1;
-        if (stage[v] == 0 && (kind[v] == kEdge || kind[v] == kCorner)) {
-          gather(v, groups);
-          const Eigen::Vector3d target = nearest_projection(groups, to_eigen(original[v]));
-          if (representable(target)) {
-            stage[v] = 1;
-            m.vert[v].P() = to_coord(target);
-            continue;
-          }
-        }
-        stage[v] = 2;
-        m.vert[v].P() = original[v];
-      }
-      candidates.clear();
-      for (int vi : dropped)
-        for (int i = offset[static_cast<size_t>(vi)]; i < offset[static_cast<size_t>(vi) + 1]; ++i)
-          if (face_mark[static_cast<size_t>(incident[i])] != round) {
-            face_mark[static_cast<size_t>(incident[i])] = round;
-            candidates.push_back(incident[i]);
-          }
-    }
-    report.reverted_vertices = static_cast<int>(std::count(reverted.begin(), reverted.end(), std::uint8_t(1)));
-  }
-
-  double displacement_sum = 0;
-  for (size_t v = 0; v < nv; ++v) {
-    if (kind[v] == kUntouched || stage[v] == 2)
-      continue;
-    ++report.moved_vertices;
-    if (stage[v] == 0 && kind[v] == kEdge)
-      ++report.edge_vertices;
-    if (stage[v] == 0 && kind[v] == kCorner)
-      ++report.corner_vertices;
-    const double d = (to_eigen(m.vert[v].cP()) - to_eigen(original[v])).norm();
-    displacement_sum += d;
-    report.max_displacement = std::max(report.max_displacement, d);
-  }
-  if (report.moved_vertices > 0)
-    report.mean_displacement = displacement_sum / report.moved_vertices;
-  return report;
+  return snap_detail::Snapper<MeshType>(m, segment_of_face, primitive_of_segment, options).run();
 }
 
 } // namespace primitive_edit

@@ -473,3 +473,54 @@ TYPED_TEST(SnapSegmentsTest, PlateWithHoleBecomesSharp)
     EXPECT_GT(face_normal(m, f).normalized().dot(expected), 0.9) << "face " << f << " label " << label;
   }
 }
+
+// The edit tool's case: the hole of the plate widened from radius 2 to 3 and only the hole snapped. The rim
+// moves out onto the new wall; the top and bottom faces it would fold over are repaired by sliding their
+// vertices outwards in their planes, so nothing is held back and no step is left at the rim. Without the
+// repair the rim is held back at the old radius.
+TYPED_TEST(SnapSegmentsTest, WidenedHoleRepairsFoldsInsteadOfHoldingBack)
+{
+  using M = TypeParam;
+  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(0.0);
+  Primitive wider = *plate.primitives[2];
+  wider.radius = 3;
+  std::vector<std::optional<Primitive>> only_hole(plate.primitives.size());
+  only_hole[2] = wider;
+
+  M held;
+  build_mesh(held, plate.soup);
+  SnapOptions no_repair;
+  no_repair.repair_folds = false;
+  const SnapReport held_report = snap_segments(held, plate.soup.labels, only_hole, no_repair);
+  EXPECT_GT(held_report.reverted_vertices, 64) << "the setup must fold the planes without the repair";
+
+  M m;
+  build_mesh(m, plate.soup);
+  const SnapReport report = snap_segments(m, plate.soup.labels, only_hole);
+  EXPECT_EQ(report.reverted_vertices, 0);
+  EXPECT_EQ(report.folded_faces, 0);
+  EXPECT_GT(report.repaired_vertices, 64);
+  std::vector<char> on_wall(m.vert.size(), 0);
+  for (size_t f = 0; f < m.face.size(); ++f)
+    if (plate.soup.labels[f] == 2)
+      for (int v : plate.soup.triangles[f])
+        on_wall[size_t(v)] = 1;
+  for (size_t v = 0; v < m.vert.size(); ++v) {
+    const Eigen::Vector3d before = plate.soup.points[v], x = eig(m.vert[v].cP());
+    if (on_wall[v]) {  // on the new wall (the rims at their old height), inside the plate
+      EXPECT_NEAR(std::hypot(x.x(), x.y()), 3.0, 1e-4) << "wall vertex " << v;
+      EXPECT_TRUE(x.z() > 0 && x.z() < plate.thick) << "wall vertex " << v;
+    }
+    if (plate.kind[v] == 1 || (!on_wall[v] && plate.kind[v] == 0)) {  // rims and top and bottom faces: in their planes
+      EXPECT_NEAR(x.z(), before.z(), 1e-4) << "vertex " << v;
+    } else if (plate.kind[v] >= 2) {  // the plate's outer border stays
+      EXPECT_LT((x - before).norm(), 1e-5) << "outer vertex " << v;
+    }
+  }
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    const Eigen::Vector3d a = plate.soup.points[size_t(plate.soup.triangles[f][0])];
+    const Eigen::Vector3d before = (plate.soup.points[size_t(plate.soup.triangles[f][1])] - a)
+                                       .cross(plate.soup.points[size_t(plate.soup.triangles[f][2])] - a);
+    EXPECT_GT(face_normal(m, f).dot(before), 0) << "face " << f;
+  }
+}

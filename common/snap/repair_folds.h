@@ -1,0 +1,206 @@
+// repair_folds.h: undoes the folds that snapping leaves by sliding vertices along the surfaces they were
+// snapped to, instead of sending them back to the scan.
+//
+// Input:  vertex positions (changed in place); face_vertex (3 vertex indices per face, -1 = dead face) and its
+//         VertexFaces; the reference of each face, the cross product of its edges before snapping (zero or
+//         non-finite: the face cannot fold); `movable(v)`, asked once per vertex near a fold; and
+//         `constrain(v, p, out)`, which puts into `out` the point of vertex v's surface nearest to p (its
+//         primitive, the edge of two primitives, its tangent plane) and returns false when it has none.
+// Output: RepairFoldsReport. Only movable vertices within max_rounds rings of a fold move, each onto its
+//         surface. A face is folded when its normal turned by more than 90 degrees from its reference or its
+//         area fell below 1e-3 of the reference (snap_segments' guard uses the same test). A connected
+//         region that still holds a fold after the last round gets its snapped positions back, so the repair
+//         never leaves more folds than it found (snap_segments then holds those back).
+// Method: the region starts as the movable vertices around the folded faces; each round grows it by one
+//         ring around the faces still folded, then runs Gauss-Seidel sweeps of the umbrella operator (a
+//         region vertex goes to the mean of its neighbours, then back onto its surface). With the region's
+//         border fixed this is Tutte's embedding on the surface, which untangles a fold once the region holds
+//         it with some margin (the rim of a widened hole pushes the plane's vertices outwards); beyond the
+//         region nothing moves.
+// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round.
+#ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
+#define PRIMITIVE_EDIT_REPAIR_FOLDS_H
+
+#include "common/mesh/vertex_faces.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace primitive_edit {
+
+struct RepairFoldsOptions
+{
+  int max_rounds = 12;      // the region reaches at most this many rings beyond a fold
+  int sweeps_per_round = 4; // umbrella passes after each ring is added
+};
+
+struct RepairFoldsReport
+{
+  int moved_vertices = 0; // vertices that left their snapped position
+  int rounds = 0;         // rounds run (0: nothing was folded)
+  int folded_faces = 0;   // faces still folded at the end
+};
+
+// The fold test shared with snap_segments' guard: `reference` is the face's edge cross product before snapping.
+inline bool face_is_folded(const Eigen::Vector3d& reference, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                           const Eigen::Vector3d& p2)
+{
+  const double before = reference.norm();
+  if (!std::isfinite(before) || before <= 0)
+    return false;
+  const Eigen::Vector3d after = (p1 - p0).cross(p2 - p0);
+  return !(reference.dot(after) > 0) || !(after.norm() > 1e-3 * before);
+}
+
+namespace repair_detail {
+
+// The growing region of vertices around the folds and the operations of one repair.
+struct FoldRegion
+{
+  std::vector<Eigen::Vector3d>& position;
+  const std::vector<int>& face_vertex;
+  const VertexFaces& vertex_faces;
+  const std::vector<Eigen::Vector3d>& reference;
+  std::vector<std::uint8_t> state; // 0: not asked yet, 1: in the region, 2: pinned
+  std::vector<int> vertices;
+  std::vector<int> folds;
+
+  int corner(int f, int k) const { return face_vertex[3 * std::size_t(f) + std::size_t(k)]; }
+  bool folded(int f) const
+  {
+    return corner(f, 0) >= 0 && face_is_folded(reference[std::size_t(f)], position[std::size_t(corner(f, 0))],
+                                               position[std::size_t(corner(f, 1))], position[std::size_t(corner(f, 2))]);
+  }
+  template <class Visit>
+  void for_faces_of(int v, Visit&& visit) const
+  {
+    for (int i = vertex_faces.offset[std::size_t(v)]; i < vertex_faces.offset[std::size_t(v) + 1]; ++i)
+      visit(vertex_faces.face[std::size_t(i)]);
+  }
+
+  // Adds the movable vertices of the faces around each corner of the folded faces.
+  template <class Movable>
+  void grow(Movable& movable)
+  {
+    for (int f : folds)
+      for (int k = 0; k < 3; ++k)
+        for_faces_of(corner(f, k), [&](int g) {
+          for (int j = 0; j < 3; ++j) {
+            const int b = corner(g, j);
+            if (b < 0 || state[std::size_t(b)] != 0)
+              continue;
+            state[std::size_t(b)] = movable(std::size_t(b)) ? 1 : 2;
+            if (state[std::size_t(b)] == 1)
+              vertices.push_back(b);
+          }
+        });
+  }
+
+  template <class Constrain>
+  void sweep(Constrain& constrain)
+  {
+    for (int v : vertices) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      int count = 0;
+      for_faces_of(v, [&](int g) {
+        for (int j = 0; j < 3; ++j)
+          if (corner(g, j) >= 0 && corner(g, j) != v) {
+            sum += position[std::size_t(corner(g, j))];
+            ++count;
+          }
+      });
+      Eigen::Vector3d target;
+      if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite())
+        position[std::size_t(v)] = target;
+    }
+  }
+
+  // The folded faces among `first` and the faces around the region, each looked at once (mark = round).
+  void find_folds(const std::vector<int>& first, std::vector<int>& mark, int round)
+  {
+    folds.clear();
+    auto check = [&](int f) {
+      if (mark[std::size_t(f)] == round)
+        return;
+      mark[std::size_t(f)] = round;
+      if (folded(f))
+        folds.push_back(f);
+    };
+    for (int f : first)
+      check(f);
+    for (int v : vertices)
+      for_faces_of(v, check);
+  }
+
+  // Gives the connected parts of the region that still hold a fold their snapped positions back.
+  void restore_failed_parts(const std::vector<Eigen::Vector3d>& snapped)
+  {
+    std::vector<int> parent(position.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&](int v) {
+      while (parent[std::size_t(v)] != v)
+        v = parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
+      return v;
+    };
+    for (int v : vertices)
+      for_faces_of(v, [&](int g) {
+        for (int j = 0; j < 3; ++j)
+          if (corner(g, j) >= 0 && state[std::size_t(corner(g, j))] == 1)
+            parent[std::size_t(root(corner(g, j)))] = root(v);
+      });
+    std::vector<std::uint8_t> failed(position.size(), 0);
+    for (int f : folds)
+      for (int k = 0; k < 3; ++k)
+        if (state[std::size_t(corner(f, k))] == 1)
+          failed[std::size_t(root(corner(f, k)))] = 1;
+    for (int v : vertices)
+      if (failed[std::size_t(root(v))])
+        position[std::size_t(v)] = snapped[std::size_t(v)];
+  }
+};
+
+} // namespace repair_detail
+
+template <class Movable, class Constrain>
+RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std::vector<int>& face_vertex,
+                               const VertexFaces& vertex_faces, const std::vector<Eigen::Vector3d>& reference,
+                               Movable&& movable, Constrain&& constrain, const RepairFoldsOptions& options = {})
+{
+  RepairFoldsReport report;
+  repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference,
+                                   std::vector<std::uint8_t>(position.size(), 0), {}, {}};
+  for (int f = 0; f < int(reference.size()); ++f)
+    if (region.folded(f))
+      region.folds.push_back(f);
+  if (region.folds.empty())
+    return report;
+
+  const std::vector<Eigen::Vector3d> snapped = position;
+  const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
+  std::vector<int> mark(reference.size(), -1);
+  for (; report.rounds < options.max_rounds && !region.folds.empty(); ++report.rounds) {
+    region.grow(movable);
+    for (int s = 0; s < options.sweeps_per_round; ++s)
+      region.sweep(constrain);
+    region.find_folds(first_folds, mark, report.rounds);
+  }
+  if (!region.folds.empty()) {
+    region.restore_failed_parts(snapped);
+    region.find_folds(first_folds, mark, report.rounds);
+  }
+  report.folded_faces = int(region.folds.size());
+  for (int v : region.vertices)
+    if (position[std::size_t(v)] != snapped[std::size_t(v)])
+      ++report.moved_vertices;
+  return report;
+}
+
+} // namespace primitive_edit
+
+#endif
