@@ -25,8 +25,9 @@
 //            (assign_edge_faces.h). A surface curved so tightly that it turns that fast between faces (radius
 //            below about 4 * sqrt(passes) * h at 20 degrees) is taken for an edge too: on the peer part with
 //            noise 0.1 mm (73 passes) its holes of radius 3.5 mm.
-// Cost:   O(F + adjacency size) for the noise (400 patches and the neighbours' distances), O(passes * (F + adjacency size)) divided by the threads for the
-//         averaging, O(F + adjacency size) for the edge faces; O(F) memory.
+// Cost:   O(F + adjacency size) for the noise (400 patches and the neighbours' distances), O(passes * (F +
+//         adjacency size)) divided by the threads for the averaging, O(F + adjacency size) for the edge faces;
+//         O(F) memory.
 #ifndef PRIMITIVE_EDIT_NOISE_SCALED_NORMALS_H
 #define PRIMITIVE_EDIT_NOISE_SCALED_NORMALS_H
 
