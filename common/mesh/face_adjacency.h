@@ -7,9 +7,11 @@
 //         even when it shares several edges. Deleted faces and edges of a degenerate face that join a vertex
 //         to itself link nothing. Faces with a null or out-of-range vertex pointer are treated as isolated.
 // Complexity: O(F + sum over face edges of the valence of one endpoint), i.e. linear for bounded valence.
-//         Vertex->face incidence is built by a counting sort; no per-face heap allocation, no maps.
+//         Vertex->face incidence is built by a counting sort (vertex_faces.h); no per-face heap allocation, no maps.
 #ifndef PRIMITIVE_EDIT_FACE_ADJACENCY_H
 #define PRIMITIVE_EDIT_FACE_ADJACENCY_H
+
+#include "common/mesh/vertex_faces.h"
 
 #include <vcg/complex/complex.h>
 
@@ -70,24 +72,10 @@ FaceAdjacency build_face_adjacency(const MeshType& m)
   const int vertex_count = int(m.vert.size());
   const std::vector<int> fv = detail::face_vertex_indices(m);
 
-  // Vertex -> incident faces by counting sort. A face with a repeated vertex is listed once per corner;
-  // the duplicate check below makes that harmless.
-  std::vector<int> vf_offset(std::size_t(vertex_count) + 1, 0);
-  for (int v : fv)
-    if (v >= 0)
-      ++vf_offset[std::size_t(v) + 1];
-  for (int v = 0; v < vertex_count; ++v)
-    vf_offset[std::size_t(v) + 1] += vf_offset[std::size_t(v)];
-  std::vector<int> vf(static_cast<std::size_t>(vf_offset[std::size_t(vertex_count)]));
-  {
-    std::vector<int> cursor(vf_offset.begin(), vf_offset.end() - 1);
-    for (int f = 0; f < face_count; ++f)
-      for (int k = 0; k < 3; ++k) {
-        const int v = fv[3 * std::size_t(f) + k];
-        if (v >= 0)
-          vf[std::size_t(cursor[std::size_t(v)]++)] = f;
-      }
-  }
+  // A face with a repeated vertex is listed once per corner; the duplicate check below makes that harmless.
+  const VertexFaces incident = build_vertex_faces(fv, std::size_t(vertex_count));
+  const std::vector<int>& vf_offset = incident.offset;
+  const std::vector<int>& vf = incident.face;
 
   FaceAdjacency adj;
   adj.offset.resize(std::size_t(face_count) + 1);

@@ -335,7 +335,7 @@ private:
   // Puts p onto the surface vertex v was snapped to (its tangent plane for unsnapped faces).
   bool constrain(std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) const
   {
-    std::vector<int> groups;
+    std::vector<int>& groups = scratch_groups_;  // called for every vertex of every sweep: no allocation
     gather(v, groups);
     if (kind_[v] == kEdge)
       return closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
@@ -358,14 +358,13 @@ private:
     std::vector<Eigen::Vector3d> position(nv);
     for (std::size_t v = 0; v < nv; ++v)
       position[v] = now(int(v));
-    const std::vector<Eigen::Vector3d> snapped = position;
     const RepairFoldsReport r = repair_folds(
         position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
         [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); });
     if (r.rounds == 0)
       return;
     for (std::size_t v = 0; v < nv; ++v) {
-      if (position[v] == snapped[v] || !representable(position[v]))
+      if (position[v] == now(int(v)) || !representable(position[v]))  // the mesh still holds the snapped positions
         continue;
       m_.vert[v].P() = to_coord(position[v]);
       if (kind_[v] == kUntouched) {
@@ -496,6 +495,7 @@ private:
   std::vector<Eigen::Vector3d> reference_;
   double max_edge_distance_ = 0;
   std::vector<std::uint8_t> kind_, stage_;
+  mutable std::vector<int> scratch_groups_;
 };
 
 } // namespace snap_detail
