@@ -12,7 +12,7 @@
 //         region that still holds a fold after the last round gets its snapped positions back, so the repair
 //         never leaves more folds than it found (snap_segments then holds those back).
 // Method: the region starts as the movable vertices around the folded faces; each round grows it by one
-//         ring around the faces still folded, then runs Gauss-Seidel sweeps of the umbrella operator (a
+//         ring around the faces still folded (options.widen: and around the whole region), then runs Gauss-Seidel sweeps of the umbrella operator (a
 //         region vertex goes to the mean of its neighbours, then back onto its surface). With the region's
 //         border fixed this is Tutte's embedding on the surface, which untangles a fold once the region holds
 //         it with some margin (the rim of a widened hole pushes the plane's vertices outwards); beyond the
@@ -38,6 +38,10 @@ struct RepairFoldsOptions
 {
   int max_rounds = 12;      // the region reaches at most this many rings beyond a fold
   int sweeps_per_round = 4; // umbrella passes after each ring is added
+  // Grow around the whole region each round, not only around the faces still folded: needed where folds sit
+  // against pinned vertices (a widened hole's rim), but a wide region that fails is restored whole, with the
+  // folds it had repaired, so snap_segments tries the narrow repair first.
+  bool widen = false;
 };
 
 struct RepairFoldsReport
@@ -70,6 +74,7 @@ struct FoldRegion
   std::vector<std::uint8_t> state; // 0: not asked yet, 1: in the region, 2: pinned
   std::vector<int> vertices;
   std::vector<int> folds;
+  std::size_t last_ring_begin = 0; // vertices[last_ring_begin..] were added by the last grow
 
   int corner(int f, int k) const { return face_vertex[3 * std::size_t(f) + std::size_t(k)]; }
   bool folded(int f) const
@@ -84,22 +89,31 @@ struct FoldRegion
       visit(vertex_faces.face[std::size_t(i)]);
   }
 
-  // Adds the movable vertices of the faces around each corner of the folded faces.
+  // Adds the movable vertices of the faces around the corners of the folded faces and, when `widen`, around
+  // the ring added by the round before.
   template <class Movable>
-  void grow(Movable& movable)
+  void grow(Movable& movable, bool widen)
   {
+    const std::size_t last_ring = last_ring_begin;
+    last_ring_begin = vertices.size();
+    auto add_around = [&](int v) {
+      for_faces_of(v, [&](int g) {
+        for (int j = 0; j < 3; ++j) {
+          const int b = corner(g, j);
+          if (b < 0 || state[std::size_t(b)] != 0)
+            continue;
+          state[std::size_t(b)] = movable(std::size_t(b)) ? 1 : 2;
+          if (state[std::size_t(b)] == 1)
+            vertices.push_back(b);
+        }
+      });
+    };
     for (int f : folds)
       for (int k = 0; k < 3; ++k)
-        for_faces_of(corner(f, k), [&](int g) {
-          for (int j = 0; j < 3; ++j) {
-            const int b = corner(g, j);
-            if (b < 0 || state[std::size_t(b)] != 0)
-              continue;
-            state[std::size_t(b)] = movable(std::size_t(b)) ? 1 : 2;
-            if (state[std::size_t(b)] == 1)
-              vertices.push_back(b);
-          }
-        });
+        add_around(corner(f, k));
+    if (widen)
+      for (std::size_t i = last_ring; i < last_ring_begin; ++i)
+        add_around(vertices[i]);
   }
 
   template <class Constrain>
@@ -185,7 +199,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
   const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
   std::vector<int> mark(reference.size(), -1);
   for (; report.rounds < options.max_rounds && !region.folds.empty(); ++report.rounds) {
-    region.grow(movable);
+    region.grow(movable, options.widen);
     for (int s = 0; s < options.sweeps_per_round; ++s)
       region.sweep(constrain);
     region.find_folds(first_folds, mark, report.rounds);

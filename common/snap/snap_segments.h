@@ -358,10 +358,18 @@ private:
     std::vector<Eigen::Vector3d> position(nv);
     for (std::size_t v = 0; v < nv; ++v)
       position[v] = now(int(v));
-    const RepairFoldsReport r = repair_folds(
-        position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
-        [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); });
-    if (r.rounds == 0)
+    // Narrow regions first (each fold's own neighbourhood), then wide ones for the folds left (RepairFoldsOptions::widen).
+    int rounds = 0;
+    for (const bool widen : {false, true}) {
+      RepairFoldsOptions options;
+      options.widen = widen;
+      rounds += repair_folds(
+                    position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
+                    [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); },
+                    options)
+                    .rounds;
+    }
+    if (rounds == 0)
       return;
     for (std::size_t v = 0; v < nv; ++v) {
       if (position[v] == now(int(v)) || !representable(position[v]))  // the mesh still holds the snapped positions
