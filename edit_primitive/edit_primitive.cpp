@@ -11,6 +11,7 @@
 #include <wrap/gl/pick.h>
 #include <wrap/qt/device_to_logical.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QDockWidget>
 #include <QKeyEvent>
@@ -35,7 +36,13 @@ Eigen::Vector2d to_gl(GLArea* gla, const QPoint& p)
 
 } // namespace
 
-EditPrimitivePlugin::EditPrimitivePlugin() = default;
+EditPrimitivePlugin::EditPrimitivePlugin()
+{
+  // Polls while MeshLab is busy with the new layer: it tells no one when an import is done.
+  restart_timer_.setSingleShot(true);
+  restart_timer_.setInterval(50);
+  connect(&restart_timer_, &QTimer::timeout, this, &EditPrimitivePlugin::restartOnCurrentLayer);
+}
 
 EditPrimitivePlugin::~EditPrimitivePlugin() { delete dock_; }
 
@@ -124,6 +131,9 @@ bool EditPrimitivePlugin::startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedData
 
 void EditPrimitivePlugin::end(MeshModel&, GLArea* gla, MLSceneGLSharedDataContext*)
 {
+  restart_timer_.stop();
+  restart_document_ = nullptr;
+  restart_view_ = nullptr;
   if (session_.attached() && session_.can_undo())
     logLine(QString("Primitive Edit: closed; its %1 undo step(s) are gone (the mesh keeps its segments and shape).")
                 .arg(session_.undo_depth()));
@@ -145,8 +155,48 @@ void EditPrimitivePlugin::changeLayer(MeshDocument& md, MeshModel& old_model, GL
 {
   if (md.mm() == &old_model && model_ == &old_model && session_.attached())
     return;
+  if (md.mm() != nullptr && session_.attached())
+    logLine(QString("Primitive Edit: the current layer is now %1; the tool moves to it.").arg(md.mm()->label()));
   end(old_model, gla, context);
-  start(md, gla, context);
+  restart_document_ = &md;
+  restart_view_ = gla;
+  restart_context_ = context;
+  // Out of MeshLab's layer-change handler, which may still be loading the layer.
+  restart_timer_.start();
+}
+
+void EditPrimitivePlugin::restartOnCurrentLayer()
+{
+  if (restart_document_ == nullptr || restart_view_ == nullptr)
+    return;
+  if (restart_document_->isBusy()) {
+    restart_timer_.start();
+    return;
+  }
+  MeshDocument& md = *restart_document_;
+  GLArea* gla = restart_view_;
+  restart_document_ = nullptr;
+  restart_view_ = nullptr;
+  // MeshLab asks for the tool's rendering (segment colours) only when the tool starts, for the layer current
+  // then.
+  if (MeshModel* m = md.mm(); m != nullptr && restart_context_ != nullptr) {
+    MLRenderingData dt;
+    restart_context_->getRenderInfoPerMeshView(m->id(), gla->context(), dt);
+    renderingData(*m, dt);
+    MLPoliciesStandAloneFunctions::disableRedundatRenderingDataAccordingToPriorities(dt);
+    restart_context_->setRenderingDataPerMeshView(m->id(), gla->context(), dt);
+    restart_context_->manageBuffers(m->id());
+  }
+  if (start(md, gla, restart_context_))
+    return;
+  // MeshLab still counts the tool as active: end it as its button does, so that the button goes off and the
+  // next Ctrl+Shift+P starts the tool again.
+  logWarning("Primitive Edit: closed, the current layer cannot be edited.");
+  if (QAction* action = gla->getCurrentEditAction()) {
+    if (gla->suspendedEditor)  // the button of a suspended tool (Esc) first resumes it
+      action->trigger();
+    action->trigger();
+  }
 }
 
 void EditPrimitivePlugin::report(const QString& what, const EditOutcome& outcome)

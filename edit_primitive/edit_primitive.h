@@ -11,6 +11,8 @@
 #include "plugin_api/mesh_document.h"
 
 #include <QPoint>
+#include <QPointer>
+#include <QTimer>
 
 #include <vector>
 
@@ -31,7 +33,8 @@ public:
   bool start(MeshDocument& md, GLArea* gla, MLSceneGLSharedDataContext* context) override;
   void end(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context) override;
   // MeshLab also reports a layer change when the current layer stays the same (e.g. after a save): the
-  // session, with its undo steps, is kept then; a real change restarts the tool on the new layer.
+  // session, with its undo steps, is kept then; a real change restarts the tool on the new layer once
+  // MeshLab has filled it, or closes the tool (its button too) when that layer cannot be edited.
   void changeLayer(MeshDocument& md, MeshModel& old_model, GLArea* gla, MLSceneGLSharedDataContext* context) override;
   void draw(MeshModel& m, GLArea* gla) override;
   void mousePress(QMouseEvent* event, MeshModel& m, GLArea* gla) override;
@@ -41,6 +44,7 @@ public:
 
 private:
   bool startOn(MeshModel& m, GLArea* gla, MLSceneGLSharedDataContext* context);
+  void restartOnCurrentLayer();
   void segment();
   void merge();
   void fit();
@@ -66,6 +70,13 @@ private:
   MLSceneGLSharedDataContext* context_ = nullptr;
   QDockWidget* dock_ = nullptr;
   PrimitiveEditPanel* panel_ = nullptr;
+
+  // A restart after a layer change, waiting for MeshLab to finish the layer (an import reports the new
+  // layer while it is still empty and loading).
+  QTimer restart_timer_;
+  QPointer<MeshDocument> restart_document_;
+  QPointer<GLArea> restart_view_;
+  MLSceneGLSharedDataContext* restart_context_ = nullptr;
 
   // Mouse: a press starts a pick (released without moving) or, with Ctrl, a split line.
   bool pressed_ = false;

@@ -115,6 +115,7 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   layout->addWidget(undo_);
   status_ = new QLabel(this);
   status_->setWordWrap(true);
+  status_->hide();
   layout->addWidget(status_);
   auto* help = new QLabel("Click: pick a segment. Shift+click: add/remove. Ctrl+drag: split along the line. "
                           "Keys: M merge, 0-5 type, F fit, R edit radius, Enter apply, Ctrl+Z or U undo, "
@@ -286,7 +287,12 @@ void PrimitiveEditPanel::setCanUndo(bool can_undo, const QString& what)
   undo_->setText(can_undo ? QString("&Undo %1").arg(what) : QString("&Undo"));
 }
 
-void PrimitiveEditPanel::setStatus(const QString& text) { status_->setText(text); }
+void PrimitiveEditPanel::setStatus(const QString& text)
+{
+  status_->setText(text);
+  // An empty status takes no room: the panel looks the same each time the tool opens, whatever it said before.
+  status_->setVisible(!text.isEmpty());
+}
 
 void PrimitiveEditPanel::focusSizeField()
 {
