@@ -350,12 +350,12 @@ void EditPrimitivePlugin::apply()
   ApplyOutcome outcome = session_.apply(true);
   if (outcome.needs_confirmation) {
     report(false, what, outcome.status.error);
+    // The session says why (a far move, or a primitive far larger than the segment).
     const QMessageBox::StandardButton answer = QMessageBox::warning(
         gla_, "Primitive Edit",
-        QString("Applying moves vertices by up to %1, more than the picked segments' size (%2).\n"
-                "The primitive may be far from the segment (check its parameters). Apply anyway?")
-            .arg(outcome.max_move, 0, 'g', 4)
-            .arg(outcome.segment_size, 0, 'g', 4),
+        QString("Applying: %1.\nThe primitive may not be what the segment is (check its type and parameters). "
+                "Apply anyway?")
+            .arg(QString::fromStdString(outcome.status.error)),
         QMessageBox::Apply | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer != QMessageBox::Apply) {
       report(false, what, "cancelled; the mesh is unchanged");

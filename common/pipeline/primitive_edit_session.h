@@ -79,7 +79,7 @@ public:
   using CoordType = typename MeshType::CoordType;
   static constexpr std::size_t kMaxUndo = 32;
   static constexpr int kMinSplitPieceFaces = 10;      // a split leaves no smaller piece
-  static constexpr double kImplausibleFitScale = 100;  // see fit_warning
+  static constexpr double kImplausibleFitScale = 100;  // see implausible_size
 
   // Starts editing m. Refuses (the status says why) when m cannot be edited: empty, a point cloud, or
   // NaN coordinates. The segments are read from the mesh (read_segment_ids); with use_quality false only
@@ -298,30 +298,15 @@ public:
     return out;
   }
   const std::optional<FitResult>& last_fit() const { return fit_; }
-  // A warning when the last fit is far larger than the picked segments (a radius or a cone's apex distance
-  // over kImplausibleFitScale times their size: a nearly flat or straight patch), else empty.
+  // A warning when the last fit is far larger than the picked segments (implausible_size), else empty.
   std::string fit_warning() const
   {
     if (!fit_ || fit_points_.rows() == 0)
       return {};
     const Eigen::Vector3d low = fit_points_.colwise().minCoeff().transpose();
     const Eigen::Vector3d high = fit_points_.colwise().maxCoeff().transpose();
-    const double size = (high - low).norm();
-    const Primitive& p = fit_->primitive;
-    const double scale = p.type == PrimitiveType::Cone ? (p.origin - 0.5 * (low + high)).norm()
-                         : p.type == PrimitiveType::Plane ? 0.0
-                                                          : p.radius;
-    if (!(scale > kImplausibleFitScale * size))
-      return {};
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "the fitted %s %.3g away, while the picked segments are %.3g across: they are nearly flat or "
-                  "straight, and a plane or another type fits them better",
-                  p.type == PrimitiveType::Cone     ? "cone's apex lies"
-                  : p.type == PrimitiveType::Sphere ? "sphere's centre lies"
-                                                    : "axis lies",
-                  scale, size);
-    return text;
+    const std::string why = implausible_size(fit_->primitive, 0.5 * (low + high), (high - low).norm());
+    return why.empty() ? why : why + ": they are nearly flat or straight, and a plane or another type fits them better";
   }
   const std::optional<Primitive>& edited() const { return edited_; }
   // The RMS distance of the fitted points from the edited primitive (the fit's RMS until an edit).
@@ -361,13 +346,15 @@ public:
       out.status = Status::failure("pick a segment and fit a primitive first");
       return out;
     }
-    measure_move(out);
-    if (!confirmed && out.max_move > out.segment_size) {
+    const Eigen::Vector3d centre = measure_move(out);
+    // A primitive far larger than the segment may move nothing (a huge cylinder lying on a flat face) and
+    // still replace the segment's shape: it asks too.
+    const std::string implausible = implausible_size(*edited_, centre, out.segment_size);
+    if (!confirmed && (out.max_move > out.segment_size || !implausible.empty())) {
       char text[200];
-      std::snprintf(text, sizeof text,
-                    "this would move vertices by up to %.4g, more than the segment's size (%.4g): confirm to apply",
+      std::snprintf(text, sizeof text, "this would move vertices by up to %.4g, more than the segment's size (%.4g)",
                     out.max_move, out.segment_size);
-      out.status = Status::failure(text);
+      out.status = Status::failure((implausible.empty() ? std::string(text) : implausible) + ": confirm to apply");
       out.needs_confirmation = true;
       return out;
     }
@@ -426,8 +413,9 @@ private:
   };
 
   // The mesh may be changed behind the session's back (another filter while the tool is on).
-  // The farthest a picked vertex is from the edited primitive, and the picked segments' size.
-  void measure_move(ApplyOutcome& out) const
+  // The farthest a picked vertex is from the edited primitive, and the picked segments' size; returns the
+  // centre of their bounding box.
+  Eigen::Vector3d measure_move(ApplyOutcome& out) const
   {
     Eigen::AlignedBox3d box;
     for (const int f : picked_faces())
@@ -438,6 +426,27 @@ private:
         out.max_move = std::max(out.max_move, std::abs(signed_distance_to_primitive(*edited_, q)));
       }
     out.segment_size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    return box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
+  }
+
+  // Why p is implausibly large for segments of this size around this centre (a radius, or a cone's apex
+  // distance, over kImplausibleFitScale times their size: a fit to a nearly flat or straight patch, or a
+  // mistyped value), else empty.
+  static std::string implausible_size(const Primitive& p, const Eigen::Vector3d& centre, double size)
+  {
+    const double scale = p.type == PrimitiveType::Cone    ? (p.origin - centre).norm()
+                         : p.type == PrimitiveType::Plane ? 0.0
+                                                          : p.radius;
+    if (!(scale > kImplausibleFitScale * size))
+      return {};
+    char text[160];
+    std::snprintf(text, sizeof text, "the %s %s %.3g away, while the picked segments are %.3g across",
+                  primitive_type_name(p.type),
+                  p.type == PrimitiveType::Cone     ? "apex lies"
+                  : p.type == PrimitiveType::Sphere ? "centre lies"
+                                                    : "axis lies",
+                  scale, size);
+    return text;
   }
 
   // A segmentation that gives the segments the mesh has already is not a step: the history keeps real ones.

@@ -455,4 +455,32 @@ TYPED_TEST(EditSessionTest, ApplyFarBeyondTheSegmentWaitsForConfirmation)
   EXPECT_NEAR(m.vert[m.vert.size() - 1].cP()[2], kHeight + 1000.0, 1e-3);
 }
 
+// Issue 12's wreck: a cylinder fitted to a noisy flat top comes out with a radius of about 1e9, lying on the
+// top, so snapping moves nothing there; it still takes the top's shape, and asks first.
+TYPED_TEST(EditSessionTest, ApplyOfAPrimitiveFarLargerThanTheSegmentWaitsForConfirmation)
+{
+  auto& s = this->session;
+  auto& m = this->mesh;
+  ASSERT_TRUE(s.pick(kFirstTopFace, false));
+  ASSERT_TRUE(s.fit(PrimitiveType::Cylinder).status.ok());
+  Primitive huge = *s.edited();
+  huge.axis = Eigen::Vector3d::UnitX();
+  huge.radius = 1e9;
+  huge.origin = Eigen::Vector3d(0, 0, kHeight - huge.radius);  // touching the top along the x axis
+  ASSERT_TRUE(s.set_edited(huge).status.ok());
+  std::vector<typename TypeParam::CoordType> before;
+  for (const auto& v : m.vert)
+    before.push_back(v.cP());
+  const std::size_t depth = s.undo_depth();
+  const ApplyOutcome refused = s.apply();
+  EXPECT_FALSE(refused.status.ok());
+  EXPECT_TRUE(refused.needs_confirmation);
+  EXPECT_LT(refused.max_move, refused.segment_size);
+  EXPECT_NE(refused.status.error.find("confirm to apply"), std::string::npos) << refused.status.error;
+  EXPECT_EQ(s.undo_depth(), depth);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    ASSERT_EQ(m.vert[v].cP(), before[v]);
+  EXPECT_TRUE(s.apply(true, true).status.ok());
+}
+
 } // namespace
