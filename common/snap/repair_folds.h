@@ -12,8 +12,9 @@
 //         region that still holds a fold after the last round gets its snapped positions back, so the repair
 //         never leaves more folds than it found (snap_segments then holds those back).
 // Method: the region starts as the movable vertices around the folded faces; each round grows it by one
-//         ring around the faces still folded (options.widen: and around the whole region), then runs Gauss-Seidel sweeps of the umbrella operator (a
-//         region vertex goes to the mean of its neighbours, then back onto its surface). With the region's
+//         ring around the faces still folded (options.widen: and around the whole region), then runs
+//         Gauss-Seidel sweeps of the umbrella operator (a region vertex goes to the mean of its neighbours,
+//         then back onto its surface). With the region's
 //         border fixed this is Tutte's embedding on the surface, which untangles a fold once the region holds
 //         it with some margin (the rim of a widened hole pushes the plane's vertices outwards); beyond the
 //         region nothing moves.
