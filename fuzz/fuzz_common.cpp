@@ -17,6 +17,7 @@
 #include "common/geometry/common_point_of_primitives.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/face_adjacency.h"
+#include "common/mesh/locate_on_surface.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/mesh/gather_segment_samples.h"
@@ -385,6 +386,34 @@ void run(Decoder& in)
 
   const FaceAdjacency adj = build_face_adjacency(m);
   check_adjacency(m, adj);
+
+  // The walk that keeps a slid vertex on the scan (snap's fold repair), over the live faces of finite corners
+  // from the first one, to a decoded point: it ends on such a face, at a finite point when the query is finite.
+  if (in.bit()) {
+    const std::vector<int> fv = detail::face_vertex_indices(m);
+    const VertexFaces vf = build_vertex_faces(fv, m.vert.size());
+    auto position = [&](int v) {
+      const auto& q = m.vert[std::size_t(v)].cP();
+      return Eigen::Vector3d(double(q[0]), double(q[1]), double(q[2]));
+    };
+    auto enters = [&](int f) {
+      if (fv[3 * std::size_t(f)] < 0)
+        return false;
+      for (int k = 0; k < 3; ++k)
+        if (!position(fv[3 * std::size_t(f) + std::size_t(k)]).allFinite())
+          return false;
+      return true;
+    };
+    const Eigen::Vector3d p(in.special(2.0), in.special(2.0), in.special(2.0));
+    const int max_steps = 1 + in.u8() % 64;
+    for (int f = 0; f < int(m.face.size()); ++f)
+      if (enters(f)) {
+        const SurfaceLocation at = locate_on_surface(position, fv, vf, enters, f, p, max_steps);
+        FUZZ_CHECK(at.face >= 0 && at.face < int(m.face.size()) && enters(at.face));
+        FUZZ_CHECK(!p.allFinite() || at.point.allFinite());
+        break;
+      }
+  }
 
   const std::vector<Eigen::Vector3d> smoothed =
       smooth_face_normals(m, adj, std::max(0, params.segment.smoothing_iterations), std::abs(params.segment.angle_deg));

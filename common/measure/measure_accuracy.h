@@ -21,6 +21,7 @@
 
 #include "common/base/progress.h"
 #include "common/base/status.h"
+#include "common/geometry/closest_point_on_triangle.h"
 
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_static_ptr.h>
@@ -66,36 +67,6 @@ struct ReferenceTriangle
   }
   bool IsD() const { return false; }
 };
-
-// Closest point of triangle abc to p, by Voronoi regions of the vertices, edges and face
-// (Ericson, Real-Time Collision Detection, 5.1.5). Needs a non-degenerate triangle.
-inline Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                                 const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0)
-    return a;
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
-    return a + (d1 / (d1 - d3)) * ab;
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
-    return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 // Marks the triangles tested by one query (a triangle spans several cells; test it once): a stamp per
 // triangle, so that clearing all marks is O(1) and the mesh needs no per-face mark component.
@@ -210,7 +181,7 @@ public:
       return std::numeric_limits<double>::infinity();
     // Start from the previous query's closest triangle: queries come in spatial order, so it is
     // usually near, and its distance prunes most cells at once.
-    double best = (detail::closest_point_on_triangle(p, triangles_[last_].a, triangles_[last_].b,
+    double best = (closest_point_on_triangle(p, triangles_[last_].a, triangles_[last_].b,
                                                      triangles_[last_].c) - p).norm();
     size_t best_index = last_;
     marker_.UnMarkAll();
@@ -234,7 +205,7 @@ public:
           if (marker_.IsMarked(&t))
             continue;
           marker_.Mark(&t);
-          const double d = (detail::closest_point_on_triangle(p, t.a, t.b, t.c) - p).norm();
+          const double d = (closest_point_on_triangle(p, t.a, t.b, t.c) - p).norm();
           if (d < best) {
             best = d;
             best_index = size_t(&t - triangles_.data());

@@ -17,8 +17,10 @@
 //         then back onto its surface). With the region's
 //         border fixed this is Tutte's embedding on the surface, which untangles a fold once the region holds
 //         it with some margin (the rim of a widened hole pushes the plane's vertices outwards); beyond the
-//         region nothing moves.
-// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round.
+//         region nothing moves. After the last round, up to settle_sweeps more sweeps run while folds
+//         remain and their number still drops, or while the region still moves (unconverged, a region that
+//         has just unfolded leaves its first rings pressed against its fixed border).
+// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep.
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
 
@@ -27,6 +29,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -43,6 +46,9 @@ struct RepairFoldsOptions
   // against pinned vertices (a widened hole's rim), but a wide region that fails is restored whole, with the
   // folds it had repaired, so snap_segments tries the narrow repair first.
   bool widen = false;
+  // Sweeps over the grown region after the last round, while folds remain or the region still moves, before
+  // giving up on it.
+  int settle_sweeps = 100;
 };
 
 struct RepairFoldsReport
@@ -117,9 +123,11 @@ struct FoldRegion
         add_around(vertices[i]);
   }
 
+  // One Gauss-Seidel pass; returns the longest move.
   template <class Constrain>
-  void sweep(Constrain& constrain)
+  double sweep(Constrain& constrain)
   {
+    double longest = 0;
     for (int v : vertices) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       int count = 0;
@@ -131,9 +139,12 @@ struct FoldRegion
           }
       });
       Eigen::Vector3d target;
-      if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite())
+      if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite()) {
+        longest = std::max(longest, (target - position[std::size_t(v)]).norm());
         position[std::size_t(v)] = target;
+      }
     }
+    return longest;
   }
 
   // The folded faces among `first` and the faces around the region, each looked at once (mark = round).
@@ -151,6 +162,18 @@ struct FoldRegion
       check(f);
     for (int v : vertices)
       for_faces_of(v, check);
+  }
+
+  void save(std::vector<Eigen::Vector3d>& out) const
+  {
+    out.resize(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      out[i] = position[std::size_t(vertices[i])];
+  }
+  void load(const std::vector<Eigen::Vector3d>& saved)
+  {
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      position[std::size_t(vertices[i])] = saved[i];
   }
 
   // Gives the connected parts of the region that still hold a fold their snapped positions back.
@@ -205,9 +228,32 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
       region.sweep(constrain);
     region.find_folds(first_folds, mark, report.rounds);
   }
+  // The region has stopped growing; Gauss-Seidel needs about as many sweeps as the region is rings deep
+  // squared to converge, more than the rounds gave it. Folds that stop dropping in number are held by the
+  // border, not by a lack of sweeps.
+  // Sweeps after the folds are gone only even the region out: the last state without folds is kept.
+  double first_move = -1, move = 0;
+  std::size_t fewest_folds = region.folds.size();
+  std::vector<Eigen::Vector3d> unfolded;
+  for (int settled = 0, stalled = 0; settled < options.settle_sweeps && !region.vertices.empty() && stalled < 2 &&
+                                     (!region.folds.empty() || move > 0.01 * first_move);
+       ++report.rounds) {
+    if (region.folds.empty())
+      region.save(unfolded);
+    for (int s = 0; s < options.sweeps_per_round; ++s, ++settled)
+      move = region.sweep(constrain);
+    first_move = first_move < 0 ? move : first_move;
+    region.find_folds(first_folds, mark, report.rounds);
+    stalled = region.folds.empty() || region.folds.size() < fewest_folds ? 0 : stalled + 1;
+    fewest_folds = std::min(fewest_folds, region.folds.size());
+  }
+  if (!region.folds.empty() && !unfolded.empty()) {
+    region.load(unfolded);
+    region.find_folds(first_folds, mark, report.rounds);
+  }
   if (!region.folds.empty()) {
     region.restore_failed_parts(snapped);
-    region.find_folds(first_folds, mark, report.rounds);
+    region.find_folds(first_folds, mark, report.rounds + 1); // a mark no find_folds has used
   }
   report.folded_faces = int(region.folds.size());
   for (int v : region.vertices)

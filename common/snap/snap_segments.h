@@ -14,7 +14,8 @@
 //         untouched, except near a fold (below). Triangles do not flip (prevent_flips): a live face whose
 //         normal turns by more than 90 degrees or whose area collapses (below 1e-3 of its original) is
 //         first repaired (repair_folds, with repair_folds on): vertices near it slide along their
-//         primitive or edge, and vertices of unsnapped faces along their tangent plane, until it unfolds
+//         primitive or edge, and vertices of unsnapped faces along the scan's surface as it was (followed
+//         face to face by locate_on_surface, on their side of a crease), until it unfolds
 //         (repaired_vertices counts them). Where a fold remains, one of its moved vertices (the most
 //         snapped, then the most displaced) falls back one step (edge/corner -> single projection ->
 //         original position), repeated until no face flips (reverted_vertices counts them). Corners,
@@ -37,6 +38,7 @@
 #include "common/base/constants.h"
 #include "common/base/primitive.h"
 #include "common/mesh/face_adjacency.h"
+#include "common/mesh/locate_on_surface.h"
 #include "common/mesh/vertex_faces.h"
 #include "common/snap/repair_folds.h"
 
@@ -347,8 +349,25 @@ private:
     const std::optional<Eigen::Vector3d> n = tangent_of_unsnapped(v);
     if (!n)
       return false;
-    const Eigen::Vector3d o = rest(int(v));
-    out = p - n->dot(p - o) * *n;
+    // Onto the scan as it was (its unsnapped faces on this side of a crease), followed face to face: a
+    // tangent plane of its own, which the noise tilts, would lift a vertex that slides far above its
+    // neighbours.
+    const double cos_crease = std::cos(radians_from_degrees(30.0));
+    auto enters = [&](int f) {
+      const Eigen::Vector3d& r = reference_[std::size_t(f)];
+      return face_vertex_[3 * std::size_t(f)] >= 0 && group_of_face(std::size_t(f)) < 0 &&
+             r.dot(*n) > cos_crease * r.norm();
+    };
+    int& host = host_face_[v];
+    for (int i = vertex_faces_.offset[v]; host < 0 && i < vertex_faces_.offset[v + 1]; ++i)
+      if (enters(vertex_faces_.face[std::size_t(i)]))
+        host = vertex_faces_.face[std::size_t(i)];
+    if (host < 0)
+      return false;
+    const SurfaceLocation at =
+        locate_on_surface([&](int u) { return rest(u); }, face_vertex_, vertex_faces_, enters, host, p);
+    host = at.face;
+    out = at.point;
     return true;
   }
 
@@ -359,15 +378,18 @@ private:
     for (std::size_t v = 0; v < nv; ++v)
       position[v] = now(int(v));
     // Narrow regions first (each fold's own neighbourhood), then wide ones for the folds left (RepairFoldsOptions::widen).
+    host_face_.assign(nv, -1);
     int rounds = 0;
     for (const bool widen : {false, true}) {
       RepairFoldsOptions options;
       options.widen = widen;
-      rounds += repair_folds(
-                    position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
-                    [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); },
-                    options)
-                    .rounds;
+      options.settle_sweeps = widen ? 100 : 0; // a narrow region is a few rings deep: its rounds have converged
+      const RepairFoldsReport pass = repair_folds(
+          position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
+          [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); }, options);
+      rounds += pass.rounds;
+      if (pass.folded_faces == 0) // nothing left for the wide pass: spare its O(F) search for folds
+        break;
     }
     if (rounds == 0)
       return;
@@ -504,6 +526,7 @@ private:
   double max_edge_distance_ = 0;
   std::vector<std::uint8_t> kind_, stage_;
   mutable std::vector<int> scratch_groups_;
+  mutable std::vector<int> host_face_; // per vertex of unsnapped faces: the scan's face it slides on, or -1
 };
 
 } // namespace snap_detail

@@ -174,7 +174,7 @@ TYPED_TEST(MeasureAccuracyTest, GridQueriesMatchBruteForceNearAndFar)
         c[k] = Eigen::Vector3d(f.cV(k)->cP()[0], f.cV(k)->cP()[1], f.cV(k)->cP()[2]);
       if ((c[1] - c[0]).cross(c[2] - c[0]).squaredNorm() == 0.0)
         continue;
-      brute = std::min(brute, (primitive_edit::detail::closest_point_on_triangle(p, c[0], c[1], c[2]) - p).norm());
+      brute = std::min(brute, (primitive_edit::closest_point_on_triangle(p, c[0], c[1], c[2]) - p).norm());
     }
     expected(q) = brute;
     // One at a time, in random order: the previous query's triangle is a poor start.
@@ -385,7 +385,7 @@ TEST(SummarizeAccuracy, ShareMeanRmsMaxAndHistogramFromKnownDistances)
 TEST(ClosestPointOnTriangle, FaceEdgeAndVertexRegions)
 {
   const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
-  using primitive_edit::detail::closest_point_on_triangle;
+  using primitive_edit::closest_point_on_triangle;
   EXPECT_TRUE(closest_point_on_triangle({0.5, 0.5, 3}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
   EXPECT_TRUE(closest_point_on_triangle({1, -1, 1}, a, b, c).isApprox(Eigen::Vector3d(1, 0, 0)));
   EXPECT_TRUE(closest_point_on_triangle({2, 2, 0}, a, b, c).isApprox(Eigen::Vector3d(1, 1, 0)));

@@ -476,13 +476,15 @@ TYPED_TEST(SnapSegmentsTest, PlateWithHoleBecomesSharp)
 
 // The edit tool's case: the hole of the plate widened from radius 2 to `radius` and only the hole snapped.
 // The rim moves out onto the new wall; the top and bottom faces it would fold over are repaired by sliding
-// their vertices outwards in their planes, so nothing is held back and no step is left at the rim. Without
-// the repair the rim is held back at the old radius.
+// their vertices outwards on the scan's surface, so nothing is held back and no step is left at the rim.
+// Without the repair the rim is held back at the old radius. On a noisy plate a slid vertex stays within the
+// noise of its plane (sliding in its own tangent plane, which the noise tilts, lifted some by 0.1).
 template <class M>
-void expect_widened_hole_repaired(double radius)
+void expect_widened_hole_repaired(double radius, double noise = 0.0)
 {
   SCOPED_TRACE(radius);
-  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(0.0);
+  SCOPED_TRACE(noise);
+  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(noise);
   Primitive wider = *plate.primitives[2];
   wider.radius = radius;
   std::vector<std::optional<Primitive>> only_hole(plate.primitives.size());
@@ -501,19 +503,25 @@ void expect_widened_hole_repaired(double radius)
   EXPECT_EQ(report.reverted_vertices, 0);
   EXPECT_EQ(report.folded_faces, 0);
   EXPECT_GT(report.repaired_vertices, 64);
-  std::vector<char> on_wall(m.vert.size(), 0);
+  std::vector<char> on_wall(m.vert.size(), 0), on_top_or_bottom(m.vert.size(), 0);
   for (size_t f = 0; f < m.face.size(); ++f)
-    if (plate.soup.labels[f] == 2)
-      for (int v : plate.soup.triangles[f])
-        on_wall[size_t(v)] = 1;
+    for (int v : plate.soup.triangles[f]) {
+      on_wall[size_t(v)] |= plate.soup.labels[f] == 2;
+      on_top_or_bottom[size_t(v)] |= plate.soup.labels[f] <= 1;
+    }
   for (size_t v = 0; v < m.vert.size(); ++v) {
     const Eigen::Vector3d before = plate.soup.points[v], x = eig(m.vert[v].cP());
     if (on_wall[v]) {  // on the new wall (the rims at their old height), inside the plate
       EXPECT_NEAR(std::hypot(x.x(), x.y()), radius, 1e-4) << "wall vertex " << v;
       EXPECT_TRUE(x.z() > 0 && x.z() < plate.thick) << "wall vertex " << v;
     }
-    if (plate.kind[v] == 1 || (!on_wall[v] && plate.kind[v] == 0)) {  // rims and top and bottom faces: in their planes
-      EXPECT_NEAR(x.z(), before.z(), 1e-4) << "vertex " << v;
+    if (plate.kind[v] == 1) {  // the rims keep their height
+      EXPECT_NEAR(x.z(), before.z(), 1e-4) << "rim vertex " << v;
+    } else if (!on_wall[v] && plate.kind[v] == 0) {  // inside the top, bottom and sides: on the scan's surface
+      if (on_top_or_bottom[v])
+        EXPECT_LE(std::abs(x.z() - (before.z() > plate.thick / 2 ? plate.thick : 0.0)), noise + 1e-4) << "vertex " << v;
+      else
+        EXPECT_LT((x - before).norm(), 1e-5) << "side vertex " << v;
     } else if (plate.kind[v] >= 2) {  // the plate's outer border stays
       EXPECT_LT((x - before).norm(), 1e-5) << "outer vertex " << v;
     }
@@ -532,4 +540,5 @@ TYPED_TEST(SnapSegmentsTest, WidenedHoleRepairsFoldsInsteadOfHoldingBack)
   // faces still folded stalled against the pinned rims and held them back (256 vertices).
   expect_widened_hole_repaired<TypeParam>(3.0);
   expect_widened_hole_repaired<TypeParam>(3.8);
+  expect_widened_hole_repaired<TypeParam>(3.8, 0.02);
 }
