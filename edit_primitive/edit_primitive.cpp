@@ -59,6 +59,11 @@ void EditPrimitivePlugin::renderingData(MeshModel& m, MLRenderingData& dt)
   // Segments are shown by face colour; the quality mirrors the ids so that PLY files keep them.
   had_face_quality_ = m.hasDataMask(MeshModel::MM_FACEQUALITY);
   m.updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY);
+  // A quality the tool adds holds no ids yet: -1 (no segmentation), not MeshLab's 0, which would read as one
+  // segment when the tool is started again or the saved file reopened.
+  if (!had_face_quality_)
+    for (CFaceO& f : m.cm.face)
+      f.Q() = -1;
   MLRenderingData::RendAtts atts;
   dt.get(MLRenderingData::PR_SOLID, atts);
   atts[MLRenderingData::ATT_NAMES::ATT_VERTPOSITION] = true;

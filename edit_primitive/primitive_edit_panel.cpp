@@ -84,6 +84,8 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   type_->addItems({"Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"});
   auto* fit = new QPushButton("&Fit", primitive);
   fit->setToolTip("Fit the chosen type to the picked segments (key F).");
+  // As narrow as its word, so that the type beside it reads whole ("Cylinder" was cut at the panel's width).
+  fit->setFixedWidth(fit->fontMetrics().horizontalAdvance("Fit") + 32);
   auto* type_row = new QHBoxLayout;
   type_row->addWidget(type_, 1);
   type_row->addWidget(fit);

@@ -13,7 +13,8 @@
 //                    (if given) says so. Returns false, with segment_of_face all -1, when neither holds.
 // write_segment_ids: input a mesh and segment_of_face (dense ids; entries missing or negative mean no
 //                    segment); writes the attribute (replacing a non-int one of the same name), the face
-//                    quality if HasPerFaceQuality(m), and colours from color_segments if HasPerFaceColor(m).
+//                    quality if HasPerFaceQuality(m), and colours from color_segments if HasPerFaceColor(m)
+//                    (over the mesh's face adjacency, built unless the caller passes it).
 // Complexity: O(F) (write: plus the adjacency build and colouring when the mesh has face colours).
 #ifndef PRIMITIVE_EDIT_SEGMENT_ATTRIBUTE_H
 #define PRIMITIVE_EDIT_SEGMENT_ATTRIBUTE_H
@@ -116,7 +117,7 @@ bool read_segment_ids(const MeshType& m, std::vector<int>& segment_of_face, bool
 }
 
 template <class MeshType>
-void write_segment_ids(MeshType& m, const std::vector<int>& segment_of_face)
+void write_segment_ids(MeshType& m, const std::vector<int>& segment_of_face, const FaceAdjacency* adjacency = nullptr)
 {
   const std::size_t face_count = m.face.size();
   std::vector<int> ids(face_count, -1);
@@ -137,7 +138,8 @@ void write_segment_ids(MeshType& m, const std::vector<int>& segment_of_face)
         m.face[f].Q() = typename MeshType::FaceType::QualityType(ids[f]);
 
   if (vcg::tri::HasPerFaceColor(m)) {
-    const std::vector<vcg::Color4b> colour = color_segments(m, build_face_adjacency(m), ids);
+    const std::vector<vcg::Color4b> colour =
+        color_segments(m, adjacency != nullptr ? *adjacency : build_face_adjacency(m), ids);
     for (std::size_t f = 0; f < face_count; ++f)
       if (!m.face[f].IsD() && ids[f] >= 0 && std::size_t(ids[f]) < colour.size())
         m.face[f].C() = colour[std::size_t(ids[f])];

@@ -91,13 +91,14 @@ public:
     if (Status usable = check_mesh_input(m); !usable)
       return {std::move(usable), {}};
     mesh_ = &m;
+    adjacency_ = build_face_adjacency(m);
     bool renumbered = false;
     if (!read_segment_ids(m, labels_, &renumbered) ||
         (!use_quality && !detail::has_int_face_attribute(m, std::string(kSegmentAttributeName))))
       labels_.assign(m.face.size(), -1);
-    else if (renumbered)  // as the filters do: the ids the user reads in the face quality are the session's
-      write_segment_ids(m, labels_);
-    adjacency_ = build_face_adjacency(m);
+    else  // the ids the user reads in the face quality are the session's (renumbered as the filters do), and
+          // the segments are drawn: a mesh opened with stored ids has no segment colours yet
+      write_segment_ids(m, labels_, &adjacency_);
     return EditOutcome::done(has_segments() ? std::to_string(segment_count()) + " segments" +
                                                   (renumbered ? " (stored ids renumbered 0 to K-1, in their order)" : "")
                                             : "no segments yet");
@@ -545,7 +546,7 @@ private:
   void store(const std::vector<int>& labels, const SegmentPrimitives& primitives)
   {
     labels_ = labels;
-    write_segment_ids(*mesh_, labels_);
+    write_segment_ids(*mesh_, labels_, &adjacency_); // merges, splits and applies keep the topology
     if (std::any_of(primitives.begin(), primitives.end(), [](const auto& p) { return p.has_value(); }))
       write_segment_primitives(*mesh_, primitives);
     else
