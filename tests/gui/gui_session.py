@@ -81,10 +81,20 @@ class Session:
         self.meshlab = subprocess.Popen([self.meshlab_path, mesh], env=self.env, stdout=self.log,
                                         stderr=subprocess.STDOUT, cwd=self.workdir)
         self.window = self.wait_for_window("MeshLab", 60)
-        self.xdo("windowmove", self.window, "0", "0")
-        self.xdo("windowsize", self.window, "1280", "1024")
+        self.restore_window(pause=0)
         self.xdo("windowfocus", self.window)
         time.sleep(4)
+
+    def restore_window(self, pause=2.0):
+        """Puts the window back at the screen's size: without a window manager it shrinks when a panel docks."""
+        self.xdo("windowmove", self.window, "0", "0")
+        self.xdo("windowsize", self.window, "1280", "1024")
+        time.sleep(pause)
+
+    def toggle_tool(self, pause=2.0):
+        """Ctrl+Shift+P: turns the Primitive Edit tool on or off, then restores the window."""
+        self.key("ctrl+shift+p", pause=2.0)
+        self.restore_window(pause)
 
     def stop(self):
         for p in (self.meshlab, self.xvfb):

@@ -158,11 +158,7 @@ def main():
         s.xdo("mousemove", "640", "500")
         s.xdo("click", "--repeat", "2", "--delay", "300", "4")
         time.sleep(1.0)
-        s.key("ctrl+shift+p", pause=2.0)
-        # Without a window manager the window shrinks when the tool's panel docks: restore its size.
-        s.xdo("windowmove", s.window, "0", "0")
-        s.xdo("windowsize", s.window, "1280", "1024")
-        time.sleep(2.0)
+        s.toggle_tool()
         before = s.shot("tool_started")
         # This clean cylinder is the normal-angle method's case (the default, primitive fit, is for scans):
         # Alt+M focuses the method, Down picks "Normal angle", and the keys go back to the view.

@@ -2,7 +2,7 @@
 xdotool.
 
 A box already segmented into its 6 faces (segment ids in the face quality) is opened and the tool started
-(Ctrl+Shift+P); the panel then shows no status. Normal-angle segmentation is chosen and S pressed. A hexagonal
+(Ctrl+Shift+P); the panel then shows no status and the stored segments are drawn in colour. Normal-angle segmentation is chosen and S pressed. A hexagonal
 prism is imported while the tool is active (File > Import Mesh, Ctrl+I, typing its path in the dialog): the
 tool must move to the new current layer, visibly: the log says so and names the prism, the panel stays, and S
 segments the prism (its 8 faces) with the segments drawn in colour. Ctrl+Shift+P then turns the tool off (S
@@ -118,6 +118,20 @@ def panel_lower(shot):
     return [data[pixel * y * w:pixel * (y * w + right)] for y in range(PANEL_LOWER_TOP, min(PANEL_LOWER_BOTTOM, h))]
 
 
+def colourful_fraction(shot, x0, y0, x1, y1):
+    """The fraction of pixels (every 4th row and column) in a box whose channels differ by more than 60: segment
+    colours, not the grey shading of an uncoloured mesh."""
+    w, h, data = shot
+    size = len(data) // (w * h * 3)
+    samples = [(x, y) for y in range(y0, y1, 4) for x in range(x0, x1, 4)]
+    colourful = 0
+    for x, y in samples:
+        i = size * 3 * (y * w + x)
+        rgb = (data[i], data[i + size], data[i + 2 * size])
+        colourful += max(rgb) - min(rgb) > 60
+    return colourful / max(1, len(samples))
+
+
 def differing_rows(a, b):
     """How many rows of two crops differ (rows one has and the other lacks count too)."""
     return sum(1 for x, y in zip(a, b) if x != y) + abs(len(a) - len(b))
@@ -131,12 +145,6 @@ def tool_lines(path):
 def find(lines, text, start=0):
     return next((i for i in range(start, len(lines)) if text in lines[i]), None)
 
-
-def restore_window(s):
-    # Without a window manager the window shrinks when the tool's panel docks: restore its size.
-    s.xdo("windowmove", s.window, "0", "0")
-    s.xdo("windowsize", s.window, "1280", "1024")
-    time.sleep(1.5)
 
 
 def main():
@@ -159,8 +167,7 @@ def main():
     shots = {}
     try:
         s.start(box)
-        s.key("ctrl+shift+p", pause=2.0)
-        restore_window(s)
+        s.toggle_tool(pause=1.5)
         shots["fresh"] = s.shot("tool_on_box")
         s.key("alt+m", "Down", pause=1.0)
         s.key("s", pause=2.0)
@@ -170,15 +177,14 @@ def main():
         s.xdo("type", "--delay", "30", prism)
         time.sleep(0.5)
         s.key("Return", pause=4.0, focus=False)
-        restore_window(s)
+        s.restore_window(pause=1.5)
         shots["imported"] = s.shot("prism_imported")
         s.key("s", pause=2.0)
         shots["segmented"] = s.shot("prism_segmented")
         s.key("ctrl+shift+p", pause=2.0)
         s.shot("tool_off")
         s.key("s", pause=2.0)
-        s.key("ctrl+shift+p", pause=2.0)
-        restore_window(s)
+        s.toggle_tool(pause=1.5)
         shots["reopened"] = s.shot("tool_reopened")
         s.key("ctrl+i", pause=2.0)
         s.xdo("type", "--delay", "30", points)
@@ -242,6 +248,11 @@ def main():
     check(moved is not None and not any("automatic segmentation" in l for l in lines[moved:]),
           "log: S does nothing once the tool has ended")
 
+    if "fresh" in shots:
+        # The box fills the view's middle: its stored segments must be drawn as soon as the tool starts.
+        fraction = colourful_fraction(shots["fresh"], 400, 300, 800, 700)
+        check(fraction > 0.5, "the box's stored segments are drawn in colour when the tool starts (%.0f%% of the "
+              "view's middle)" % (100 * fraction))
     if all(k in shots for k in ("fresh", "imported", "segmented", "reopened")):
         edge = panel_right(shots["fresh"])
         check(100 < edge < 600 and panel_right(shots["imported"]) == edge,

@@ -139,11 +139,7 @@ def main():
         s.xdo("mousemove", "640", "500")
         s.xdo("click", "--repeat", "2", "--delay", "300", "4")
         time.sleep(1.0)
-        s.key("ctrl+shift+p", pause=2.0)
-        # Without a window manager the window shrinks when the tool's panel docks: restore its size.
-        s.xdo("windowmove", s.window, "0", "0")
-        s.xdo("windowsize", s.window, "1280", "1024")
-        time.sleep(2.0)
+        s.toggle_tool()
         before = s.shot("tool_started")
         # The panel's default method is "Primitive fit (scans)": S segments with it.
         s.key("s", pause=1.0)
