@@ -203,6 +203,37 @@ struct FoldRegion
   }
 };
 
+// The region has stopped growing; Gauss-Seidel needs about as many sweeps as the region is rings deep squared
+// to converge, more than the rounds gave it. Sweeps on (options.settle_sweeps at most) while folds remain and
+// still drop in number (folds that stall are held by the border, not by a lack of sweeps), or, once they are
+// gone, while the region still moves, which only evens it out: the last state without folds is kept. Rounds
+// (find_folds' marks) count on from `round`; returns the round reached.
+template <class Constrain>
+int settle(FoldRegion& region, Constrain& constrain, const RepairFoldsOptions& options,
+           const std::vector<int>& first_folds, std::vector<int>& mark, int round)
+{
+  double first_move = -1, move = 0;
+  std::size_t fewest_folds = region.folds.size();
+  std::vector<Eigen::Vector3d> unfolded;
+  for (int settled = 0, stalled = 0; settled < options.settle_sweeps && !region.vertices.empty() && stalled < 2 &&
+                                     (!region.folds.empty() || move > 0.01 * first_move);
+       ++round) {
+    if (region.folds.empty())
+      region.save(unfolded);
+    for (int s = 0; s < options.sweeps_per_round; ++s, ++settled)
+      move = region.sweep(constrain);
+    first_move = first_move < 0 ? move : first_move;
+    region.find_folds(first_folds, mark, round);
+    stalled = region.folds.empty() || region.folds.size() < fewest_folds ? 0 : stalled + 1;
+    fewest_folds = std::min(fewest_folds, region.folds.size());
+  }
+  if (!region.folds.empty() && !unfolded.empty()) {
+    region.load(unfolded);
+    region.find_folds(first_folds, mark, round);
+  }
+  return round;
+}
+
 } // namespace repair_detail
 
 template <class Movable, class Constrain>
@@ -228,29 +259,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
       region.sweep(constrain);
     region.find_folds(first_folds, mark, report.rounds);
   }
-  // The region has stopped growing; Gauss-Seidel needs about as many sweeps as the region is rings deep
-  // squared to converge, more than the rounds gave it. Folds that stop dropping in number are held by the
-  // border, not by a lack of sweeps.
-  // Sweeps after the folds are gone only even the region out: the last state without folds is kept.
-  double first_move = -1, move = 0;
-  std::size_t fewest_folds = region.folds.size();
-  std::vector<Eigen::Vector3d> unfolded;
-  for (int settled = 0, stalled = 0; settled < options.settle_sweeps && !region.vertices.empty() && stalled < 2 &&
-                                     (!region.folds.empty() || move > 0.01 * first_move);
-       ++report.rounds) {
-    if (region.folds.empty())
-      region.save(unfolded);
-    for (int s = 0; s < options.sweeps_per_round; ++s, ++settled)
-      move = region.sweep(constrain);
-    first_move = first_move < 0 ? move : first_move;
-    region.find_folds(first_folds, mark, report.rounds);
-    stalled = region.folds.empty() || region.folds.size() < fewest_folds ? 0 : stalled + 1;
-    fewest_folds = std::min(fewest_folds, region.folds.size());
-  }
-  if (!region.folds.empty() && !unfolded.empty()) {
-    region.load(unfolded);
-    region.find_folds(first_folds, mark, report.rounds);
-  }
+  report.rounds = repair_detail::settle(region, constrain, options, first_folds, mark, report.rounds);
   if (!region.folds.empty()) {
     region.restore_failed_parts(snapped);
     region.find_folds(first_folds, mark, report.rounds + 1); // a mark no find_folds has used

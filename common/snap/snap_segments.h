@@ -303,6 +303,14 @@ private:
     return true;
   }
 
+  // Unsnapped faces more than 30 degrees apart meet at a crease: a vertex there does not slide, and a
+  // sliding vertex does not cross one.
+  static double cos_crease()
+  {
+    static const double cosine = std::cos(radians_from_degrees(30.0));
+    return cosine;
+  }
+
   // The unit normal at a vertex of unsnapped faces, or nothing on a crease (faces more than 30 degrees
   // from it), where sliding in a plane would cut the corner. Faces touching a snapped vertex are left out
   // when others remain: they are the blurred band the snap reshapes, not the surface the vertex lies on.
@@ -324,11 +332,10 @@ private:
     if (!(n.norm() > 0) || !n.allFinite())
       return std::nullopt;
     n.normalize();
-    const double cos_crease = std::cos(radians_from_degrees(30.0));
     for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i) {
       const int f = vertex_faces_.face[std::size_t(i)];
       const Eigen::Vector3d& r = reference_[std::size_t(f)];
-      if (counts(f) && (!(r.norm() > 0) || r.dot(n) < cos_crease * r.norm()))
+      if (counts(f) && (!(r.norm() > 0) || r.dot(n) < cos_crease() * r.norm()))
         return std::nullopt;
     }
     return n;
@@ -352,11 +359,10 @@ private:
     // Onto the scan as it was (its unsnapped faces on this side of a crease), followed face to face: a
     // tangent plane of its own, which the noise tilts, would lift a vertex that slides far above its
     // neighbours.
-    const double cos_crease = std::cos(radians_from_degrees(30.0));
     auto enters = [&](int f) {
       const Eigen::Vector3d& r = reference_[std::size_t(f)];
       return face_vertex_[3 * std::size_t(f)] >= 0 && group_of_face(std::size_t(f)) < 0 &&
-             r.dot(*n) > cos_crease * r.norm();
+             r.dot(*n) > cos_crease() * r.norm();
     };
     int& host = host_face_[v];
     for (int i = vertex_faces_.offset[v]; host < 0 && i < vertex_faces_.offset[v + 1]; ++i)
@@ -383,7 +389,8 @@ private:
     for (const bool widen : {false, true}) {
       RepairFoldsOptions options;
       options.widen = widen;
-      options.settle_sweeps = widen ? 100 : 0; // a narrow region is a few rings deep: its rounds have converged
+      if (!widen)
+        options.settle_sweeps = 0; // a narrow region is a few rings deep: its rounds have converged
       const RepairFoldsReport pass = repair_folds(
           position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
           [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); }, options);
