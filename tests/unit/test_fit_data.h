@@ -159,6 +159,12 @@ inline Primitive make_torus(Eigen::Vector3d centre, Eigen::Vector3d axis, double
   return p;
 }
 
+inline double distance_to_line(const Eigen::Vector3d& p, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
+{
+  const Eigen::Vector3d v = p - origin;
+  return (v - v.dot(axis) * axis).norm();
+}
+
 } // namespace test_fit
 
 #endif

@@ -17,25 +17,19 @@ using namespace test_fit;
 
 namespace {
 
-constexpr double kTol = 1e-6;
+constexpr double kDirectTol = 1e-6;
 
 double axis_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
   return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized()))));
 }
 
-double distance_to_line(const Eigen::Vector3d& p, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
-{
-  const Eigen::Vector3d v = p - origin;
-  return (v - v.dot(axis) * axis).norm();
-}
-
 void expect_exact(const FitResult& r, const Sample& s, double size)
 {
   ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_TRUE(primitive_is_valid(r.primitive));
-  EXPECT_LT(r.rms, kTol * size);
-  EXPECT_LT(r.max_residual, kTol * size);
+  EXPECT_LT(r.rms, kDirectTol * size);
+  EXPECT_LT(r.max_residual, kDirectTol * size);
   EXPECT_EQ(r.point_count, s.points.rows());
 }
 
@@ -54,8 +48,8 @@ TEST(DirectFit, PlaneExact)
   const FitResult r = fit_plane_direct(s.points);
   expect_exact(r, s, 2);
   EXPECT_EQ(r.primitive.type, PrimitiveType::Plane);
-  EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol);
-  EXPECT_NEAR((r.primitive.origin - truth.origin).dot(truth.axis), 0, kTol);
+  EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kDirectTol);
+  EXPECT_NEAR((r.primitive.origin - truth.origin).dot(truth.axis), 0, kDirectTol);
 }
 
 TEST(DirectFit, SphereFullHemisphereAndCap)
@@ -67,8 +61,8 @@ TEST(DirectFit, SphereFullHemisphereAndCap)
     const Sample s = sample_primitive(truth, patch, 400, 2);
     const FitResult r = fit_sphere_direct(s.points);
     expect_exact(r, s, 3);
-    EXPECT_LT((r.primitive.origin - truth.origin).norm(), kTol * 3) << "cap " << cap;
-    EXPECT_NEAR(r.primitive.radius, 3, kTol * 3) << "cap " << cap;
+    EXPECT_LT((r.primitive.origin - truth.origin).norm(), kDirectTol * 3) << "cap " << cap;
+    EXPECT_NEAR(r.primitive.radius, 3, kDirectTol * 3) << "cap " << cap;
   }
 }
 
@@ -83,9 +77,9 @@ TEST(DirectFit, CylinderFullAndPartialArcs)
     const FitResult r = fit_cylinder_direct(s.points);
     expect_exact(r, s, 2);
     EXPECT_EQ(r.primitive.type, PrimitiveType::Cylinder);
-    EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol) << degrees << " degrees";
-    EXPECT_NEAR(r.primitive.radius, 2, kTol * 2) << degrees << " degrees";
-    EXPECT_LT(distance_to_line(truth.origin, r.primitive.origin, r.primitive.axis), kTol * 2) << degrees;
+    EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kDirectTol) << degrees << " degrees";
+    EXPECT_NEAR(r.primitive.radius, 2, kDirectTol * 2) << degrees << " degrees";
+    EXPECT_LT(distance_to_line(truth.origin, r.primitive.origin, r.primitive.axis), kDirectTol * 2) << degrees;
   }
 }
 
@@ -104,10 +98,10 @@ TEST(DirectFit, ConeFullAndPartialArcs)
       expect_exact(r, s, 1);
       EXPECT_EQ(r.primitive.type, PrimitiveType::Cone);
       // The axis must point from the apex into the opening, not merely be parallel.
-      EXPECT_GT(r.primitive.axis.dot(truth.axis), 1 - kTol * kTol);
-      EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol);
-      EXPECT_LT((r.primitive.origin - truth.origin).norm(), kTol);
-      EXPECT_NEAR(r.primitive.half_angle, truth.half_angle, kTol * truth.half_angle);
+      EXPECT_GT(r.primitive.axis.dot(truth.axis), 1 - kDirectTol * kDirectTol);
+      EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kDirectTol);
+      EXPECT_LT((r.primitive.origin - truth.origin).norm(), kDirectTol);
+      EXPECT_NEAR(r.primitive.half_angle, truth.half_angle, kDirectTol * truth.half_angle);
     }
   }
 }
@@ -126,8 +120,8 @@ TEST(DirectFit, ZeroWeightsIgnorePoints)
   const FitResult r = fit_cylinder_direct(s.points, weights);
   ASSERT_TRUE(r.status.ok()) << r.status.error;
   EXPECT_EQ(r.point_count, 270);
-  EXPECT_NEAR(r.primitive.radius, 0.5, kTol * 0.5);
-  EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol);
+  EXPECT_NEAR(r.primitive.radius, 0.5, kDirectTol * 0.5);
+  EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kDirectTol);
 }
 
 TEST(DirectFit, DispatchByType)
@@ -136,7 +130,7 @@ TEST(DirectFit, DispatchByType)
   const Sample s = sample_primitive(truth, Patch(), 100, 6);
   const FitResult r = fit_quadric_direct(PrimitiveType::Sphere, s.points);
   ASSERT_TRUE(r.status.ok()) << r.status.error;
-  EXPECT_NEAR(r.primitive.radius, 0.7, kTol * 0.7);
+  EXPECT_NEAR(r.primitive.radius, 0.7, kDirectTol * 0.7);
   expect_refused(fit_quadric_direct(PrimitiveType::Torus, s.points), "not a quadric");
 }
 
@@ -154,8 +148,8 @@ TEST(DirectFit, FitPrimitiveMethods)
     options.method = method;
     const FitResult r = fit_primitive(PrimitiveType::Cylinder, s.points, Eigen::MatrixX3d(), Eigen::VectorXd(), options);
     expect_exact(r, s, 2);
-    EXPECT_NEAR(r.primitive.radius, 2, kTol * 2) << fit_method_name(method);
-    EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kTol) << fit_method_name(method);
+    EXPECT_NEAR(r.primitive.radius, 2, kDirectTol * 2) << fit_method_name(method);
+    EXPECT_LT(axis_angle(r.primitive.axis, truth.axis), kDirectTol) << fit_method_name(method);
     if (method == FitMethod::Direct) {
       EXPECT_EQ(r.primitive.radius, direct_alone.primitive.radius);  // the direct fit itself, not refined
     }

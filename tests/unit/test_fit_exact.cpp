@@ -24,12 +24,6 @@ void expect_parallel(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
   EXPECT_GT(std::abs(a.normalized().dot(b.normalized())), 1 - 1e-10) << a.transpose() << " vs " << b.transpose();
 }
 
-double distance_to_line(const Eigen::Vector3d& p, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
-{
-  const Eigen::Vector3d v = p - origin;
-  return (v - v.dot(axis) * axis).norm();
-}
-
 void expect_fit_quality(const FitResult& r, const Sample& s, double size)
 {
   ASSERT_TRUE(r.status.ok()) << r.status.error;

@@ -15,13 +15,13 @@ using namespace primitive_edit;
 
 // An n x n grid of unit squares in z = 0, two triangles each (counter-clockwise seen from +z); a vertex with
 // x >= fold_at is raised by (x - fold_at), so the surface bends by 45 degrees along x = fold_at.
-struct Grid
+struct SquareGrid
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<int> face_vertex;
   VertexFaces vertex_faces;
 
-  Grid(int n, double fold_at = 1e9)
+  SquareGrid(int n, double fold_at = 1e9)
   {
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i)
@@ -54,7 +54,7 @@ struct Grid
 
 TEST(LocateOnSurface, WalksAcrossAFlatGridToTheFaceUnderThePoint)
 {
-  const Grid grid(10);
+  const SquareGrid grid(10);
   const SurfaceLocation at = grid.locate(0, Eigen::Vector3d(7.3, 8.6, 2.5));
   EXPECT_TRUE(at.point.isApprox(Eigen::Vector3d(7.3, 8.6, 0), 1e-12));
   const Eigen::Vector3d c = grid.centroid(at.face);
@@ -64,7 +64,7 @@ TEST(LocateOnSurface, WalksAcrossAFlatGridToTheFaceUnderThePoint)
 
 TEST(LocateOnSurface, StopsOnTheBorderAtItsNearestPoint)
 {
-  const Grid grid(4);
+  const SquareGrid grid(4);
   const SurfaceLocation beyond = grid.locate(0, Eigen::Vector3d(6, 2.5, 1));
   EXPECT_TRUE(beyond.point.isApprox(Eigen::Vector3d(4, 2.5, 0), 1e-12));
   // Only the faces with x < 2 make up the surface: the walk stops on its border at x = 2.
@@ -75,7 +75,7 @@ TEST(LocateOnSurface, StopsOnTheBorderAtItsNearestPoint)
 
 TEST(LocateOnSurface, FollowsTheSurfaceOverABend)
 {
-  const Grid grid(8, 4.0);
+  const SquareGrid grid(8, 4.0);
   // Above the raised half, 45 degrees up from x = 4: the nearest point is on that half, not on z = 0.
   const Eigen::Vector3d p(6, 3.5, 2 + 0.5);
   const SurfaceLocation at = grid.locate(0, p);
@@ -87,7 +87,7 @@ TEST(LocateOnSurface, FollowsTheSurfaceOverABend)
 
 TEST(LocateOnSurface, AWalkCutShortEndsOnAFaceOfItsPath)
 {
-  const Grid grid(20);
+  const SquareGrid grid(20);
   const SurfaceLocation at = grid.locate(0, Eigen::Vector3d(19.5, 19.5, 0), [](int) { return true; }, 3);
   EXPECT_NEAR(at.point.z(), 0, 1e-12);
   // Three faces crossed, then three descents to a face sharing a corner: far from the query, near the start.

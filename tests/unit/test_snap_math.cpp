@@ -2,6 +2,7 @@
 #include "common/base/constants.h"
 #include "common/geometry/closest_point_on_intersection.h"
 #include "common/geometry/common_point_of_primitives.h"
+#include "test_fit_data.h"
 
 #include <gtest/gtest.h>
 
@@ -13,58 +14,9 @@
 #include <vector>
 
 using namespace primitive_edit;
+using namespace test_fit;
 
 namespace {
-
-
-Primitive plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
-{
-  Primitive q;
-  q.type = PrimitiveType::Plane;
-  q.origin = origin;
-  q.axis = normal.normalized();
-  return q;
-}
-
-Primitive sphere(const Eigen::Vector3d& centre, double radius)
-{
-  Primitive q;
-  q.type = PrimitiveType::Sphere;
-  q.origin = centre;
-  q.radius = radius;
-  return q;
-}
-
-Primitive cylinder(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double radius)
-{
-  Primitive q;
-  q.type = PrimitiveType::Cylinder;
-  q.origin = origin;
-  q.axis = axis.normalized();
-  q.radius = radius;
-  return q;
-}
-
-Primitive cone(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis, double half_angle)
-{
-  Primitive q;
-  q.type = PrimitiveType::Cone;
-  q.origin = apex;
-  q.axis = axis.normalized();
-  q.half_angle = half_angle;
-  return q;
-}
-
-Primitive torus(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, double major, double minor)
-{
-  Primitive q;
-  q.type = PrimitiveType::Torus;
-  q.origin = centre;
-  q.axis = axis.normalized();
-  q.radius = major;
-  q.minor_radius = minor;
-  return q;
-}
 
 // Brute force: points of the curve found by plain Newton-to-feasibility from many random starts around p
 // (no nearest-point logic involved); the smallest distance from p among them.
@@ -117,8 +69,8 @@ void expect_nearest_on_curve(const Primitive& a, const Primitive& b, const Eigen
 
 TEST(ClosestPointOnIntersection, PlanePlaneLine)
 {
-  const Primitive a = plane({0, 0, 1}, {0, 0, 1});
-  const Primitive b = plane({2, 0, 0}, {1, 0, 1});
+  const Primitive a = make_plane({0, 0, 1}, {0, 0, 1});
+  const Primitive b = make_plane({2, 0, 0}, {1, 0, 1});
   const Eigen::Vector3d p(1.7, 3.0, 1.4);
   Eigen::Vector3d x;
   ASSERT_TRUE(closest_point_on_intersection(a, b, p, 10.0, x));
@@ -131,22 +83,22 @@ TEST(ClosestPointOnIntersection, PlanePlaneLine)
 
 TEST(ClosestPointOnIntersection, PlaneCylinderEllipse)
 {
-  expect_nearest_on_curve(plane({0, 0, 1}, {0.3, 0, 1}), cylinder({0, 0, 0}, {0, 0, 1}, 3.0), {3.2, 0.5, 1.4});
-  expect_nearest_on_curve(plane({0, 0, 1}, {0.3, 0, 1}), cylinder({0, 0, 0}, {0, 0, 1}, 3.0), {-2.5, -1.5, 0.7});
+  expect_nearest_on_curve(make_plane({0, 0, 1}, {0.3, 0, 1}), make_cylinder({0, 0, 0}, {0, 0, 1}, 3.0), {3.2, 0.5, 1.4});
+  expect_nearest_on_curve(make_plane({0, 0, 1}, {0.3, 0, 1}), make_cylinder({0, 0, 0}, {0, 0, 1}, 3.0), {-2.5, -1.5, 0.7});
 }
 
 TEST(ClosestPointOnIntersection, CylinderCylinder)
 {
-  const Primitive a = cylinder({0, 0, 0}, {0, 0, 1}, 3.0);
-  const Primitive b = cylinder({0, 0, 0}, {1, 0, 0}, 2.0);
+  const Primitive a = make_cylinder({0, 0, 0}, {0, 0, 1}, 3.0);
+  const Primitive b = make_cylinder({0, 0, 0}, {1, 0, 0}, 2.0);
   expect_nearest_on_curve(a, b, {2.5, 1.5, 1.2});
   expect_nearest_on_curve(a, b, {-2.1, -0.2, 2.3});
 }
 
 TEST(ClosestPointOnIntersection, SpherePlaneCircle)
 {
-  const Primitive a = sphere({1, 2, 3}, 4.0);
-  const Primitive b = plane({1, 2, 4}, {0, 0, 1});
+  const Primitive a = make_sphere({1, 2, 3}, 4.0);
+  const Primitive b = make_plane({1, 2, 4}, {0, 0, 1});
   const Eigen::Vector3d p(3.5, 4.0, 4.6);
   Eigen::Vector3d x;
   ASSERT_TRUE(closest_point_on_intersection(a, b, p, 10.0, x));
@@ -161,8 +113,8 @@ TEST(ClosestPointOnIntersection, SpherePlaneCircle)
 
 TEST(ClosestPointOnIntersection, ConePlane)
 {
-  const Primitive a = cone({0, 0, 0}, {0, 0, 1}, kPi / 6);
-  const Primitive b = plane({0, 0, 5}, {0, 0, 1});
+  const Primitive a = make_cone({0, 0, 0}, {0, 0, 1}, kPi / 6);
+  const Primitive b = make_plane({0, 0, 5}, {0, 0, 1});
   const Eigen::Vector3d p(2.5, 1.0, 5.3);
   Eigen::Vector3d x;
   ASSERT_TRUE(closest_point_on_intersection(a, b, p, 10.0, x));
@@ -171,13 +123,13 @@ TEST(ClosestPointOnIntersection, ConePlane)
   EXPECT_LT((x - expected).norm(), 1e-9);
   expect_nearest_on_curve(a, b, p);
   // An oblique section (an ellipse).
-  expect_nearest_on_curve(a, plane({0, 0, 5}, {0.4, 0.2, 1}), {1.5, -2.0, 4.2});
+  expect_nearest_on_curve(a, make_plane({0, 0, 5}, {0.4, 0.2, 1}), {1.5, -2.0, 4.2});
 }
 
 TEST(ClosestPointOnIntersection, TorusPlane)
 {
-  const Primitive a = torus({0, 0, 0}, {0, 0, 1}, 5.0, 1.0);
-  const Primitive b = plane({0, 0, 0.5}, {0, 0, 1});
+  const Primitive a = make_torus({0, 0, 0}, {0, 0, 1}, 5.0, 1.0);
+  const Primitive b = make_plane({0, 0, 0.5}, {0, 0, 1});
   const Eigen::Vector3d p(6.0, 0.3, 0.7);
   Eigen::Vector3d x;
   ASSERT_TRUE(closest_point_on_intersection(a, b, p, 10.0, x));
@@ -191,39 +143,39 @@ TEST(ClosestPointOnIntersection, TorusPlane)
 TEST(ClosestPointOnIntersection, TangentOrParallelSurfacesFail)
 {
   Eigen::Vector3d x(7, 7, 7);
-  EXPECT_FALSE(closest_point_on_intersection(sphere({0, 0, 0}, 1.0), plane({0, 0, 1}, {0, 0, 1}),
+  EXPECT_FALSE(closest_point_on_intersection(make_sphere({0, 0, 0}, 1.0), make_plane({0, 0, 1}, {0, 0, 1}),
                                              {0.05, 0.0, 1.02}, 10.0, x));
-  EXPECT_FALSE(closest_point_on_intersection(cylinder({0, 0, 0}, {0, 0, 1}, 2.0), plane({2, 0, 0}, {1, 0, 0}),
+  EXPECT_FALSE(closest_point_on_intersection(make_cylinder({0, 0, 0}, {0, 0, 1}, 2.0), make_plane({2, 0, 0}, {1, 0, 0}),
                                              {2.1, 0.3, 0.5}, 10.0, x));
-  EXPECT_FALSE(closest_point_on_intersection(plane({0, 0, 0}, {0, 0, 1}), plane({0, 0, 1}, {0, 0, 1}),
+  EXPECT_FALSE(closest_point_on_intersection(make_plane({0, 0, 0}, {0, 0, 1}), make_plane({0, 0, 1}, {0, 0, 1}),
                                              {0.3, 0.2, 0.5}, 10.0, x));
   // Two planes 2 degrees apart: an edge exists but is too ill-conditioned to snap to.
   const double t = 2.0 * kPi / 180.0;
-  EXPECT_FALSE(closest_point_on_intersection(plane({0, 0, 0}, {0, 0, 1}), plane({0, 0, 0}, {std::sin(t), 0, std::cos(t)}),
+  EXPECT_FALSE(closest_point_on_intersection(make_plane({0, 0, 0}, {0, 0, 1}), make_plane({0, 0, 0}, {std::sin(t), 0, std::cos(t)}),
                                              {0.1, 0.2, 0.01}, 10.0, x));
   EXPECT_EQ(x, Eigen::Vector3d(7, 7, 7));
 }
 
 TEST(ClosestPointOnIntersection, FarOrInvalidInputFails)
 {
-  const Primitive a = plane({0, 0, 0}, {0, 0, 1});
-  const Primitive b = plane({0, 0, 0}, {1, 0, 0});
+  const Primitive a = make_plane({0, 0, 0}, {0, 0, 1});
+  const Primitive b = make_plane({0, 0, 0}, {1, 0, 0});
   const Eigen::Vector3d p(3, 0, 0);  // 3 away from the line (the y axis)
   Eigen::Vector3d x;
   EXPECT_FALSE(closest_point_on_intersection(a, b, p, 2.0, x));
   EXPECT_TRUE(closest_point_on_intersection(a, b, p, 4.0, x));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(closest_point_on_intersection(a, b, Eigen::Vector3d(nan, 0, 0), 4.0, x));
-  Primitive bad = sphere({0, 0, 0}, nan);
+  Primitive bad = make_sphere({0, 0, 0}, nan);
   EXPECT_FALSE(closest_point_on_intersection(a, bad, p, 4.0, x));
   EXPECT_FALSE(closest_point_on_intersection(a, b, p, nan, x));
 }
 
 TEST(CommonPointOfPrimitives, ThreePlanesExactCorner)
 {
-  const Primitive a = plane({1, 2, 3}, {1, 0.2, 0});
-  const Primitive b = plane({-1, 0, 2}, {0.1, 1, 0.3});
-  const Primitive c = plane({0, 0, 4}, {0.2, -0.1, 1});
+  const Primitive a = make_plane({1, 2, 3}, {1, 0.2, 0});
+  const Primitive b = make_plane({-1, 0, 2}, {0.1, 1, 0.3});
+  const Primitive c = make_plane({0, 0, 4}, {0.2, -0.1, 1});
   Eigen::Matrix3d n;
   n << a.axis.transpose(), b.axis.transpose(), c.axis.transpose();
   const Eigen::Vector3d d(a.axis.dot(a.origin), b.axis.dot(b.origin), c.axis.dot(c.origin));
@@ -235,9 +187,9 @@ TEST(CommonPointOfPrimitives, ThreePlanesExactCorner)
 
 TEST(CommonPointOfPrimitives, TwoPlanesAndCylinder)
 {
-  const Primitive cyl = cylinder({0, 0, 0}, {0, 0, 1}, 2.0);
-  const Primitive top = plane({0, 0, 1}, {0, 0, 1});
-  const Primitive side = plane({0, 0.5, 0}, {0, 1, 0});
+  const Primitive cyl = make_cylinder({0, 0, 0}, {0, 0, 1}, 2.0);
+  const Primitive top = make_plane({0, 0, 1}, {0, 0, 1});
+  const Primitive side = make_plane({0, 0.5, 0}, {0, 1, 0});
   Eigen::Vector3d x;
   ASSERT_TRUE(common_point_of_primitives({&cyl, &top, &side}, {1.8, 0.6, 1.1}, 5.0, x));
   EXPECT_LT((x - Eigen::Vector3d(std::sqrt(3.75), 0.5, 1.0)).norm(), 1e-9);
@@ -249,22 +201,22 @@ TEST(CommonPointOfPrimitives, FourConcurrentPlanesMeetAtApex)
 {
   // A square pyramid with apex (1, 2, 3).
   const Eigen::Vector3d apex(1, 2, 3);
-  const Primitive a = plane(apex, {1, 0, 1}), b = plane(apex, {-1, 0, 1}), c = plane(apex, {0, 1, 1}),
-                  d = plane(apex, {0, -1, 1});
+  const Primitive a = make_plane(apex, {1, 0, 1}), b = make_plane(apex, {-1, 0, 1}), c = make_plane(apex, {0, 1, 1}),
+                  d = make_plane(apex, {0, -1, 1});
   Eigen::Vector3d x;
   ASSERT_TRUE(common_point_of_primitives({&a, &b, &c, &d}, apex + Eigen::Vector3d(0.1, -0.2, -0.3), 2.0, x));
   EXPECT_LT((x - apex).norm(), 1e-9);
   // Move one face: the four planes no longer share a point.
-  const Primitive d_off = plane(apex + Eigen::Vector3d(0, 0, 0.2), {0, -1, 1});
+  const Primitive d_off = make_plane(apex + Eigen::Vector3d(0, 0, 0.2), {0, -1, 1});
   EXPECT_FALSE(common_point_of_primitives({&a, &b, &c, &d_off}, apex, 2.0, x));
 }
 
 TEST(CommonPointOfPrimitives, DegenerateInputsFail)
 {
-  const Primitive a = plane({0, 0, 0}, {1, 0, 0});
-  const Primitive b = plane({0, 0, 0}, {0, 1, 0});
-  const Primitive c = plane({0, 0, 0}, {1, 1, 0});  // through the same line as a and b
-  const Primitive z = plane({0, 0, 0}, {0, 0, 1});
+  const Primitive a = make_plane({0, 0, 0}, {1, 0, 0});
+  const Primitive b = make_plane({0, 0, 0}, {0, 1, 0});
+  const Primitive c = make_plane({0, 0, 0}, {1, 1, 0});  // through the same line as a and b
+  const Primitive z = make_plane({0, 0, 0}, {0, 0, 1});
   Eigen::Vector3d x(7, 7, 7);
   EXPECT_FALSE(common_point_of_primitives({&a, &b, &c}, {0.1, 0.1, 0.5}, 5.0, x));
   EXPECT_FALSE(common_point_of_primitives({&a, &b}, {0.1, 0.1, 0.5}, 5.0, x));

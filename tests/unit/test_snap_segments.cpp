@@ -4,6 +4,7 @@
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
+#include "test_fit_data.h"
 #include "test_mesh.h"
 
 #include "meshlab_test_mesh.h"
@@ -24,9 +25,10 @@ using namespace primitive_edit;
 
 namespace {
 
-
 using plate_fixture::build_mesh;
 using plate_fixture::Soup;
+using test_fit::make_cylinder;
+using test_fit::make_plane;
 
 template <class C>
 Eigen::Vector3d eig(const C& c)
@@ -71,30 +73,11 @@ Soup make_tube(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, doubl
   return s;
 }
 
-Primitive cylinder(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double radius)
-{
-  Primitive q;
-  q.type = PrimitiveType::Cylinder;
-  q.origin = origin;
-  q.axis = axis.normalized();
-  q.radius = radius;
-  return q;
-}
-
-Primitive plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
-{
-  Primitive q;
-  q.type = PrimitiveType::Plane;
-  q.origin = origin;
-  q.axis = normal.normalized();
-  return q;
-}
-
 // A box [0,L] tessellated on a lattice of step h, edges rounded with radius `round` and every vertex
 // shifted by uniform noise, then rotated by `rot` and moved by `shift`. Labels: side 2a (axis a at 0) and
 // 2a+1 (axis a at L[a]); lattice[v] is the vertex's exact position on the box before rounding/noise
 // (before rotation), bound[v] how many of its coordinates are at a bound (1 side, 2 edge, 3 corner).
-struct Box
+struct RoundedBox
 {
   Soup soup;
   std::vector<Eigen::Vector3d> lattice;
@@ -102,10 +85,10 @@ struct Box
   std::vector<std::optional<Primitive>> planes;
 };
 
-Box make_box(const Eigen::Vector3d& size, double h, double round, double noise, const Eigen::Matrix3d& rot,
-             const Eigen::Vector3d& shift)
+RoundedBox make_box(const Eigen::Vector3d& size, double h, double round, double noise, const Eigen::Matrix3d& rot,
+                  const Eigen::Vector3d& shift)
 {
-  Box box;
+  RoundedBox box;
   const Eigen::Vector3i n = (size / h).array().round().cast<int>();
   std::vector<int> index(static_cast<size_t>((n.x() + 1) * (n.y() + 1) * (n.z() + 1)), -1);
   std::mt19937 rng(12345);
@@ -158,7 +141,7 @@ Box make_box(const Eigen::Vector3d& size, double h, double round, double noise, 
     normal[a] = positive ? 1 : -1;
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     origin[a] = positive ? size[a] : 0;
-    box.planes.push_back(plane(rot * origin + shift, rot * normal));
+    box.planes.push_back(make_plane(rot * origin + shift, rot * normal));
   }
   return box;
 }
@@ -181,7 +164,7 @@ TYPED_TEST(SnapSegmentsTest, CylinderRadiusOverride)
   const Soup tube = make_tube(origin, axis, 10.0, 64, 40, [&](double, double) { return 4.8 + noise(rng); });
   M m;
   build_mesh(m, tube);
-  const Primitive edited = cylinder(origin, axis, 5.0);
+  const Primitive edited = make_cylinder(origin, axis, 5.0);
   const SnapReport report = snap_segments(m, tube.labels, {edited});
   EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()));
   EXPECT_EQ(report.edge_vertices, 0);
@@ -206,7 +189,7 @@ TYPED_TEST(SnapSegmentsTest, BoxEdgesAndCornersBecomeSharp)
   const Eigen::Matrix3d rot =
       (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())).toRotationMatrix();
   const Eigen::Vector3d shift(2, -1, 3);
-  const Box box = make_box({10, 6, 4}, 0.25, 0.3, 0.02, rot, shift);
+  const RoundedBox box = make_box({10, 6, 4}, 0.25, 0.3, 0.02, rot, shift);
   M m;
   build_mesh(m, box.soup);
   const SnapReport report = snap_segments(m, box.soup.labels, box.planes);
@@ -287,8 +270,8 @@ TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
     }
     outer = inner;
   }
-  const Primitive wall = cylinder({0, 0, 0}, {0, 0, 1}, radius);
-  const Primitive top = plane({0, 0, height}, {0, 0, 1});
+  const Primitive wall = make_cylinder({0, 0, 0}, {0, 0, 1}, radius);
+  const Primitive top = make_plane({0, 0, height}, {0, 0, 1});
 
   M sharp;
   build_mesh(sharp, s);
@@ -372,7 +355,7 @@ TYPED_TEST(SnapSegmentsTest, UnsnappedSegmentsUntouched)
   std::vector<Eigen::Vector3d> before;
   for (const auto& v : m.vert)
     before.push_back(eig(v.cP()));
-  const Primitive cyl = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  const Primitive cyl = make_cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
   const SnapReport report = snap_segments(m, s.labels, {cyl, std::nullopt});
   EXPECT_EQ(report.moved_vertices, (along / 2 + 1) * around);
   for (size_t v = 0; v < m.vert.size(); ++v) {
@@ -398,14 +381,14 @@ TYPED_TEST(SnapSegmentsTest, BadInputWritesNoNaN)
   std::vector<Eigen::Vector3d> before;
   for (const auto& v : m.vert)
     before.push_back(eig(v.cP()));
-  Primitive broken = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  Primitive broken = make_cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
   broken.radius = nan;
   SnapReport report = snap_segments(m, s.labels, {broken});
   EXPECT_EQ(report.moved_vertices, 0);
   for (size_t v = 0; v < m.vert.size(); ++v)
     EXPECT_EQ(eig(m.vert[v].cP()), before[v]);
 
-  const Primitive cyl = cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
+  const Primitive cyl = make_cylinder({0, 0, 0}, {0, 0, 1}, 5.0);
   m.vert[40].P()[0] = typename M::ScalarType(nan);
   report = snap_segments(m, s.labels, {cyl});
   EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()) - 1);
