@@ -1,0 +1,116 @@
+// Tests of repair_folds on a flat grid, where a vertex's surface is the plane z = 0.
+#include "common/snap/repair_folds.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace {
+
+using namespace primitive_edit;
+
+// An nx x ny grid of unit squares in z = 0, two triangles each, counter-clockwise seen from +z.
+struct FlatGrid
+{
+  int nx, ny;
+  std::vector<Eigen::Vector3d> position;
+  std::vector<int> face_vertex;
+  std::vector<Eigen::Vector3d> reference;
+  VertexFaces vertex_faces;
+
+  FlatGrid(int nx_, int ny_) : nx(nx_), ny(ny_)
+  {
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        position.emplace_back(i, j, 0);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const int v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)})
+          face_vertex.push_back(v);
+    for (std::size_t f = 0; f < face_vertex.size() / 3; ++f) {
+      const Eigen::Vector3d& p0 = position[std::size_t(face_vertex[3 * f])];
+      reference.push_back((position[std::size_t(face_vertex[3 * f + 1])] - p0)
+                              .cross(position[std::size_t(face_vertex[3 * f + 2])] - p0));
+    }
+    vertex_faces = build_vertex_faces(face_vertex, position.size());
+  }
+  int id(int i, int j) const { return j * (nx + 1) + i; }
+  bool on_border(int v) const
+  {
+    const int i = v % (nx + 1), j = v / (nx + 1);
+    return i == 0 || j == 0 || i == nx || j == ny;
+  }
+  int folded_faces_near(int centre, int radius) const
+  {
+    const int ci = centre % (nx + 1), cj = centre / (nx + 1);
+    int folded = 0;
+    for (std::size_t f = 0; f < face_vertex.size() / 3; ++f) {
+      const int v = face_vertex[3 * f], i = v % (nx + 1), j = v / (nx + 1);
+      if (std::abs(i - ci) <= radius && std::abs(j - cj) <= radius &&
+          face_is_folded(reference[f], position[std::size_t(v)], position[std::size_t(face_vertex[3 * f + 1])],
+                         position[std::size_t(face_vertex[3 * f + 2])]))
+        ++folded;
+    }
+    return folded;
+  }
+};
+
+// Every movable vertex stays on the plane z = 0.
+bool onto_plane(std::size_t, const Eigen::Vector3d& p, Eigen::Vector3d& out)
+{
+  out = Eigen::Vector3d(p.x(), p.y(), 0);
+  return true;
+}
+
+// A vertex pushed 2.5 cells across its neighbours folds the faces around it; the grid's border is fixed.
+// `far_fold` adds a second fold 40 cells away that cannot be undone: a vertex pushed the same way but pinned,
+// with its own ring pinned too, so no region can reach it.
+FlatGrid repaired_grid(bool far_fold, RepairFoldsReport& report)
+{
+  FlatGrid g(70, 30);
+  const int pushed = g.id(15, 15), pinned = g.id(55, 15);
+  g.position[std::size_t(pushed)].x() += 2.5;
+  std::vector<bool> movable(g.position.size(), true);
+  if (far_fold) {
+    g.position[std::size_t(pinned)].x() += 2.5;
+    for (int j = 13; j <= 17; ++j)
+      for (int i = 53; i <= 57; ++i)
+        movable[std::size_t(g.id(i, j))] = false;
+  }
+  RepairFoldsOptions options;
+  options.widen = true;
+  options.max_rounds = 1; // one ring, so the settle sweeps do the repair
+  report = repair_folds(
+      g.position, g.face_vertex, g.vertex_faces, g.reference,
+      [&](std::size_t v) { return movable[v] && !g.on_border(int(v)); }, onto_plane, options);
+  return g;
+}
+
+} // namespace
+
+// Each connected part of the region settles on its own: a fold elsewhere that cannot be undone changes nothing
+// about how a repairable one is repaired. When the whole region settled as one, the pinned fold kept it from
+// ever being free of folds, so the repairable part stopped as soon as its folds were gone, before it had evened
+// out (its vertices ended up to 4.5e-4 from where they settle alone).
+TEST(RepairFolds, UnrepairableFoldElsewhereDoesNotCutTheSettleShort)
+{
+  RepairFoldsReport alone, beside;
+  const FlatGrid a = repaired_grid(false, alone);
+  const FlatGrid b = repaired_grid(true, beside);
+  EXPECT_GT(alone.moved_vertices, 0);
+  EXPECT_EQ(alone.folded_faces, 0);
+  EXPECT_GT(beside.folded_faces, 0); // the pinned fold is still there
+  EXPECT_EQ(a.folded_faces_near(a.id(15, 15), 14), 0);
+  EXPECT_EQ(b.folded_faces_near(b.id(15, 15), 14), 0);
+  double largest_difference = 0;
+  for (int j = 0; j <= a.ny; ++j)
+    for (int i = 0; i <= 35; ++i)
+      largest_difference = std::max(largest_difference,
+                                    (a.position[std::size_t(a.id(i, j))] - b.position[std::size_t(b.id(i, j))]).norm());
+  EXPECT_EQ(largest_difference, 0.0);
+}
