@@ -16,10 +16,11 @@
 //         Gauss-Seidel sweeps of the umbrella operator (a region vertex goes to the mean of its neighbours,
 //         then back onto its surface). With the region's border fixed this is Tutte's embedding on the
 //         surface, which untangles a fold once the region holds it with some margin (the rim of a widened
-//         hole pushes the plane's vertices outwards); beyond the region nothing moves. After the last round,
-//         each connected part of the region gets up to settle_sweeps more sweeps while it holds folds and
-//         their number still falls by 5% a check, or while it still moves (unconverged, a part that has just
-//         unfolded leaves its first rings pressed against its fixed border).
+//         hole pushes the plane's vertices outwards); beyond the region nothing moves. The rounds end early
+//         when the folds stall (FoldTrend: they no longer fall by 5% a check). After the last round, each
+//         connected part of the region gets up to settle_sweeps more sweeps while its folds have not stalled,
+//         or while it still moves (unconverged, a part that has just unfolded leaves its first rings pressed
+//         against its fixed border).
 // Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep.
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
@@ -219,9 +220,33 @@ struct FoldRegion
   }
 };
 
-// Folds that fall by less than this factor in a check have stalled: the bundled scan's unrepairable regions
-// lose 0.2-0.4% of their folds a check, a widened hole's rim 25-60%.
+// Whether a region's folds still fall, check by check. A count under kStallFactor of the fewest so far is
+// progress; a count above the last one is a region still taking folds in as it grows onto them; anything else
+// is a stall, and two in a row end the region's repair. The bundled scan's regions, which never unfold, lose
+// 0.2-2% of their folds a check by then; a widened hole's rim loses 4-60%, after rising for a few rounds.
 constexpr double kStallFactor = 0.95;
+
+class FoldTrend
+{
+public:
+  explicit FoldTrend(std::size_t folds) : last_(folds), fewest_(folds) {}
+  // Records this check's count; true once the folds have stalled twice in a row.
+  bool stalled(std::size_t folds)
+  {
+    if (folds == 0 || folds > last_ || double(folds) < kStallFactor * double(fewest_)) {
+      fewest_ = folds;
+      stalls_ = 0;
+    } else {
+      ++stalls_;
+    }
+    last_ = folds;
+    return stalls_ >= 2;
+  }
+
+private:
+  std::size_t last_, fewest_;
+  int stalls_ = 0;
+};
 
 // The region has stopped growing; Gauss-Seidel needs about as many sweeps as the region is rings deep squared
 // to converge, more than the rounds gave it. Each connected part sweeps on (options.settle_sweeps at most)
@@ -242,19 +267,18 @@ int settle(const FoldRegion& region, Constrain& constrain, const RepairFoldsOpti
     int r = round;
     part.find_folds({}, mark, r++);
     double first_move = -1, move = 0;
-    std::size_t fewest_folds = part.folds.size();
+    FoldTrend trend(part.folds.size());
+    bool stalled = false;
     std::vector<Eigen::Vector3d> unfolded;
-    for (int settled = 0, stalled = 0;
-         settled < options.settle_sweeps && stalled < 2 && (!part.folds.empty() || move > 0.01 * first_move); ++r) {
+    for (int settled = 0;
+         settled < options.settle_sweeps && !stalled && (!part.folds.empty() || move > 0.01 * first_move); ++r) {
       if (part.folds.empty())
         part.save(unfolded);
       for (int s = 0; s < options.sweeps_per_round; ++s, ++settled)
         move = part.sweep(constrain);
       first_move = first_move < 0 ? move : first_move;
       part.find_folds({}, mark, r);
-      const bool fell = double(part.folds.size()) < kStallFactor * double(fewest_folds);
-      stalled = part.folds.empty() || fell ? 0 : stalled + 1;
-      fewest_folds = std::min(fewest_folds, part.folds.size());
+      stalled = trend.stalled(part.folds.size());
     }
     if (!part.folds.empty() && !unfolded.empty())
       part.load(unfolded);
@@ -282,11 +306,14 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
   const std::vector<Eigen::Vector3d> snapped = position;
   const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
   std::vector<int> mark(reference.size(), -1);
-  for (; report.rounds < options.max_rounds && !region.folds.empty(); ++report.rounds) {
+  repair_detail::FoldTrend trend(region.folds.size());
+  for (bool stalled = false; report.rounds < options.max_rounds && !region.folds.empty() && !stalled;
+       ++report.rounds) {
     region.grow(movable, options.widen);
     for (int s = 0; s < options.sweeps_per_round; ++s)
       region.sweep(constrain);
     region.find_folds(first_folds, mark, report.rounds);
+    stalled = trend.stalled(region.folds.size());
   }
   report.rounds = repair_detail::settle(region, constrain, options, mark, report.rounds);
   region.find_folds(first_folds, mark, report.rounds); // marks from here on are ones no find_folds has used
