@@ -1,5 +1,6 @@
 // test_fit_data.h: synthetic samples of primitives for the fit tests and benchmark: points with exact
-// outward normals on a (partial) patch, Gaussian noise, perturbed normals and outliers, seeded.
+// outward normals on a (partial) patch, Gaussian noise, perturbed normals and outliers, seeded. Also the
+// primitive makers (make_plane ...) and distance_to_line, which the fit and snap tests share.
 #ifndef PRIMITIVE_EDIT_TEST_FIT_DATA_H
 #define PRIMITIVE_EDIT_TEST_FIT_DATA_H
 
