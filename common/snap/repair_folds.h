@@ -206,14 +206,14 @@ struct FoldRegion
     return parts;
   }
 
-  // Gives the connected parts of the region that still hold a fold their snapped positions back.
-  void restore_failed_parts(const std::vector<Eigen::Vector3d>& snapped)
+  // Gives the parts (connected_parts()) that still hold a fold their snapped positions back.
+  void restore_failed_parts(const std::vector<std::vector<int>>& parts, const std::vector<Eigen::Vector3d>& snapped)
   {
     std::vector<std::uint8_t> at_fold(position.size(), 0);
     for (int f : folds)
       for (int k = 0; k < 3; ++k)
         at_fold[std::size_t(corner(f, k))] = 1;
-    for (const std::vector<int>& part : connected_parts())
+    for (const std::vector<int>& part : parts)
       if (std::any_of(part.begin(), part.end(), [&](int v) { return at_fold[std::size_t(v)] != 0; }))
         for (int v : part)
           position[std::size_t(v)] = snapped[std::size_t(v)];
@@ -253,17 +253,17 @@ private:
 // while it holds folds and they have not stalled (folds that stall are held by the border, not by a lack of
 // sweeps), or, once they are gone, while it still moves, which only evens it out: the last state without
 // folds is kept. Parts stop on their own, so a scan's unrepairable folds do not keep the others sweeping.
-// Rounds (find_folds' marks) count on from `round`; returns the last round any part reached.
+// `parts` is region.connected_parts(). Rounds (find_folds' marks) count on from `round`; returns the last round
+// any part reached (`round` when none settled).
 template <class Constrain>
-int settle(const FoldRegion& region, Constrain& constrain, const RepairFoldsOptions& options, std::vector<int>& mark,
-           int round)
+int settle(const FoldRegion& region, const std::vector<std::vector<int>>& parts, Constrain& constrain,
+           const RepairFoldsOptions& options, std::vector<int>& mark, int round)
 {
   int last = round;
   if (options.settle_sweeps <= 0)
     return last;
-  for (std::vector<int>& vertices : region.connected_parts()) {
-    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, {},
-                    std::move(vertices), {}};
+  for (const std::vector<int>& vertices : parts) {
+    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, {}, vertices, {}};
     int r = round;
     part.find_folds({}, mark, r++);
     double first_move = -1, move = 0;
@@ -315,10 +315,16 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
     region.find_folds(first_folds, mark, report.rounds);
     stalled = trend.stalled(region.folds.size());
   }
-  report.rounds = repair_detail::settle(region, constrain, options, mark, report.rounds);
-  region.find_folds(first_folds, mark, report.rounds); // marks from here on are ones no find_folds has used
+  std::vector<std::vector<int>> parts;
+  if (options.settle_sweeps > 0 || !region.folds.empty())
+    parts = region.connected_parts();
+  const int settled = repair_detail::settle(region, parts, constrain, options, mark, report.rounds);
+  if (settled > report.rounds) { // something moved since the last round's search
+    report.rounds = settled;
+    region.find_folds(first_folds, mark, report.rounds); // marks from here on are ones no find_folds has used
+  }
   if (!region.folds.empty()) {
-    region.restore_failed_parts(snapped);
+    region.restore_failed_parts(parts, snapped);
     region.find_folds(first_folds, mark, report.rounds + 1);
   }
   report.folded_faces = int(region.folds.size());
