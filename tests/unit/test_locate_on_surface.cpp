@@ -1,5 +1,6 @@
 // Tests of common/mesh/locate_on_surface.h (the walk that keeps a slid vertex on the scan).
 #include "common/mesh/locate_on_surface.h"
+#include "triangle_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -7,39 +8,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
 
 using namespace primitive_edit;
 
-// An n x n grid of unit squares in z = 0, two triangles each (counter-clockwise seen from +z); a vertex with
-// x >= fold_at is raised by (x - fold_at), so the surface bends by 45 degrees along x = fold_at.
-struct SquareGrid
+// An n x n TriangleGrid, optionally bent along x = fold_at, and the walk over it.
+struct SquareGrid : grid_fixture::TriangleGrid
 {
-  std::vector<Eigen::Vector3d> points;
-  std::vector<int> face_vertex;
-  VertexFaces vertex_faces;
-
-  SquareGrid(int n, double fold_at = 1e9)
-  {
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        points.emplace_back(i, j, std::max(0.0, i - fold_at));
-    auto id = [n](int i, int j) { return j * (n + 1) + i; };
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (const int v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)})
-          face_vertex.push_back(v);
-    vertex_faces = build_vertex_faces(face_vertex, points.size());
-  }
-  int faces() const { return int(face_vertex.size() / 3); }
-  Eigen::Vector3d centroid(int f) const
-  {
-    return (points[std::size_t(face_vertex[3 * std::size_t(f)])] + points[std::size_t(face_vertex[3 * std::size_t(f) + 1])] +
-            points[std::size_t(face_vertex[3 * std::size_t(f) + 2])]) /
-           3;
-  }
+  explicit SquareGrid(int n, double fold_at = std::numeric_limits<double>::infinity()) : TriangleGrid(n, n, fold_at) {}
   template <class Enters>
   SurfaceLocation locate(int start, const Eigen::Vector3d& p, Enters&& enters, int max_steps = 64) const
   {
@@ -68,7 +47,8 @@ TEST(LocateOnSurface, StopsOnTheBorderAtItsNearestPoint)
   const SurfaceLocation beyond = grid.locate(0, Eigen::Vector3d(6, 2.5, 1));
   EXPECT_TRUE(beyond.point.isApprox(Eigen::Vector3d(4, 2.5, 0), 1e-12));
   // Only the faces with x < 2 make up the surface: the walk stops on its border at x = 2.
-  const SurfaceLocation fenced = grid.locate(0, Eigen::Vector3d(3.5, 1.5, 0), [&](int f) { return grid.centroid(f).x() < 2; });
+  const SurfaceLocation fenced =
+      grid.locate(0, Eigen::Vector3d(3.5, 1.5, 0), [&](int f) { return grid.centroid(f).x() < 2; });
   EXPECT_LT(grid.centroid(fenced.face).x(), 2);
   EXPECT_TRUE(fenced.point.isApprox(Eigen::Vector3d(2, 1.5, 0), 1e-12));
 }

@@ -1,5 +1,6 @@
 // Tests of repair_folds on a flat grid, where a vertex's surface is the plane z = 0.
 #include "common/snap/repair_folds.h"
+#include "triangle_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -8,38 +9,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <vector>
 
 namespace {
 
 using namespace primitive_edit;
 
-// An nx x ny grid of unit squares in z = 0, two triangles each, counter-clockwise seen from +z.
-struct FlatGrid
+// A flat TriangleGrid with each face's reference (its edge cross product) for the fold test.
+struct FlatGrid : grid_fixture::TriangleGrid
 {
-  int nx, ny;
-  std::vector<Eigen::Vector3d> position;
-  std::vector<int> face_vertex;
   std::vector<Eigen::Vector3d> reference;
-  VertexFaces vertex_faces;
 
-  FlatGrid(int nx_, int ny_) : nx(nx_), ny(ny_)
+  FlatGrid(int nx_, int ny_) : TriangleGrid(nx_, ny_)
   {
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i)
-        position.emplace_back(i, j, 0);
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        for (const int v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)})
-          face_vertex.push_back(v);
-    for (std::size_t f = 0; f < face_vertex.size() / 3; ++f) {
-      const Eigen::Vector3d& p0 = position[std::size_t(face_vertex[3 * f])];
-      reference.push_back((position[std::size_t(face_vertex[3 * f + 1])] - p0)
-                              .cross(position[std::size_t(face_vertex[3 * f + 2])] - p0));
-    }
-    vertex_faces = build_vertex_faces(face_vertex, position.size());
+    for (int f = 0; f < faces(); ++f)
+      reference.push_back((corner(f, 1) - corner(f, 0)).cross(corner(f, 2) - corner(f, 0)));
   }
-  int id(int i, int j) const { return j * (nx + 1) + i; }
   bool on_border(int v) const
   {
     const int i = v % (nx + 1), j = v / (nx + 1);
@@ -49,11 +35,10 @@ struct FlatGrid
   {
     const int ci = centre % (nx + 1), cj = centre / (nx + 1);
     int folded = 0;
-    for (std::size_t f = 0; f < face_vertex.size() / 3; ++f) {
-      const int v = face_vertex[3 * f], i = v % (nx + 1), j = v / (nx + 1);
+    for (int f = 0; f < faces(); ++f) {
+      const int v = face_vertex[3 * std::size_t(f)], i = v % (nx + 1), j = v / (nx + 1);
       if (std::abs(i - ci) <= radius && std::abs(j - cj) <= radius &&
-          face_is_folded(reference[f], position[std::size_t(v)], position[std::size_t(face_vertex[3 * f + 1])],
-                         position[std::size_t(face_vertex[3 * f + 2])]))
+          face_is_folded(reference[std::size_t(f)], corner(f, 0), corner(f, 1), corner(f, 2)))
         ++folded;
     }
     return folded;
@@ -74,10 +59,10 @@ FlatGrid repaired_grid(bool far_fold, RepairFoldsReport& report)
 {
   FlatGrid g(70, 30);
   const int pushed = g.id(15, 15), pinned = g.id(55, 15);
-  g.position[std::size_t(pushed)].x() += 2.5;
-  std::vector<bool> movable(g.position.size(), true);
+  g.points[std::size_t(pushed)].x() += 2.5;
+  std::vector<bool> movable(g.points.size(), true);
   if (far_fold) {
-    g.position[std::size_t(pinned)].x() += 2.5;
+    g.points[std::size_t(pinned)].x() += 2.5;
     for (int j = 13; j <= 17; ++j)
       for (int i = 53; i <= 57; ++i)
         movable[std::size_t(g.id(i, j))] = false;
@@ -86,7 +71,7 @@ FlatGrid repaired_grid(bool far_fold, RepairFoldsReport& report)
   options.widen = true;
   options.max_rounds = 1; // one ring, so the settle sweeps do the repair
   report = repair_folds(
-      g.position, g.face_vertex, g.vertex_faces, g.reference,
+      g.points, g.face_vertex, g.vertex_faces, g.reference,
       [&](std::size_t v) { return movable[v] && !g.on_border(int(v)); }, onto_plane, options);
   return g;
 }
@@ -111,6 +96,6 @@ TEST(RepairFolds, UnrepairableFoldElsewhereDoesNotCutTheSettleShort)
   for (int j = 0; j <= a.ny; ++j)
     for (int i = 0; i <= 35; ++i)
       largest_difference = std::max(largest_difference,
-                                    (a.position[std::size_t(a.id(i, j))] - b.position[std::size_t(b.id(i, j))]).norm());
+                                    (a.points[std::size_t(a.id(i, j))] - b.points[std::size_t(b.id(i, j))]).norm());
   EXPECT_EQ(largest_difference, 0.0);
 }

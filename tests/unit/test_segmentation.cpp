@@ -127,7 +127,8 @@ int count_segments(const std::vector<int>& seg)
 
 template <class M>
 class SegmentationTest : public ::testing::Test {};
-using SegmentationMeshTypes = ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh, test_mesh::FreesAttributes<QMesh>>;
+using SegmentationMeshTypes =
+    ::testing::Types<test_mesh::TMesh, test_mesh::MeshLabMesh, test_mesh::FreesAttributes<QMesh>>;
 TYPED_TEST_SUITE(SegmentationTest, SegmentationMeshTypes);
 
 TYPED_TEST(SegmentationTest, AdjacencyOfClosedManifoldHasThreeSymmetricNeighbours)
