@@ -14,12 +14,13 @@
 //         region and kBandRings rings around it (95% must agree) replaces it and growth resumes (a plane
 //         patch that is part of a large cylinder), twice at most. Regions smaller than min_region_faces or
 //         curved more tightly than min_curvature_radius are undone, their faces marked failed.
-// Cost:   O(F log F) for the seed order; growth visits each face O(1) times per refit of its region, and
-//         refits happen at geometric size steps on at most kFitSampleCount faces.
+// Cost:   O(F) for the seed order (a radix sort); growth visits each face O(1) times per refit of its region,
+//         and refits happen at geometric size steps on at most kFitSampleCount faces.
 #ifndef PRIMITIVE_EDIT_GROW_REGIONS_H
 #define PRIMITIVE_EDIT_GROW_REGIONS_H
 
 #include "common/base/progress.h"
+#include "common/base/sort_by_key.h"
 #include "common/segment/fit_region_primitive.h"
 #include "common/segment/growing_faces.h"
 
@@ -97,8 +98,7 @@ inline std::vector<int> seed_order(const GrowingFaces& g, const FaceAdjacency& a
     variation[f] = v / std::max(1, adj.offset[f + 1] - adj.offset[f]);
     order.push_back(int(f));
   }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return variation[std::size_t(a)] < variation[std::size_t(b)]; });
+  sort_by_key(order, [&](int f) { return variation[std::size_t(f)]; });
   return order;
 }
 

@@ -56,8 +56,8 @@
 //         each phase's wall-clock time.
 //         Faces without a defined normal (zero area, NaN/Inf coordinates) never seed or grow a region; the
 //         final flood gives them the label of a neighbour.
-// Complexity: O(F log F) time (seed sort and the final priority flood); growth visits each face O(1) times
-//         per refit of its region, and refits happen at geometric size steps on subsamples of at most
+// Complexity: O(F log F) time (the final priority flood; the seed order is a radix sort); growth visits each
+//         face O(1) times per refit of its region, and refits happen at geometric size steps on subsamples of at most
 //         kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). Merging refits
 //         each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each region, per
 //         round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
