@@ -1,7 +1,7 @@
 // fit_region_primitive.h: a primitive for a set of faces, accepted only when the faces agree with it.
 //
 // Input:  GrowingFaces (growing_faces.h), the faces, an optional start primitive, the distance tolerance,
-//         the normal angle (radians) and the share of the faces' area that must agree (face_agrees).
+//         the normal angle (radians) and the share of the faces' area that must agree (FaceAgreement).
 // Output: the primitive, or std::nullopt when none is accepted.
 // Method: on at most kFitSampleCount evenly strided faces (centroid, smoothed normal, area): with a start,
 //         the start refined (refine_primitive, 10 iterations); without, a plane first, then

@@ -2,7 +2,7 @@
 // the primitive its faces agree with.
 //
 // Input:  GrowingFaces (growing_faces.h), the FaceAdjacency and GrowingScale: the distance tolerance and
-//         normal angle of face_agrees, the faces of a seed patch, the fewest faces a region keeps and the
+//         normal angle of FaceAgreement, the faces of a seed patch, the fewest faces a region keeps and the
 //         smallest radius of curvature a region's primitive may have (smaller: an edge rounded by the
 //         scanner's blur, not a CAD surface).
 // Output: GrowingRegions: label (region of each face, -1 for none), and per region its primitive and faces.
@@ -112,6 +112,7 @@ inline void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj,
                                 std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue)
 {
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
+  const FaceAgreement agrees(scale.tolerance, scale.angle);
   for (;;) {
     const int grow_mark = ++stamps.mark;
     queue = region;
@@ -122,7 +123,7 @@ inline void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj,
         if (stamps.stamp[std::size_t(h)] == grow_mark || !unassigned(h))
           continue;
         stamps.stamp[std::size_t(h)] = grow_mark;
-        if (!face_agrees(g, prim, h, scale.tolerance, scale.angle))
+        if (!agrees(g, prim, h))
           continue;
         label[std::size_t(h)] = id;
         region.push_back(h);

@@ -5,11 +5,11 @@
 // Output: GrowingFaces: per face the centroid, the area, the smoothed normal (smooth_face_normals.h) and
 //         `valid` (a finite centroid, a defined normal and a positive area; other faces never seed, grow or
 //         count in a share). Then the tests the phases share:
-//         face_agrees      the centroid within tol of the primitive and the normal within the angle of the
-//                          primitive's normal there (either side), the angle widened linearly to twice its
-//                          value as the distance goes to 0: on a rough scan the local slope of a face that
-//                          lies on the surface is noise, while a face of another surface meeting it at an
-//                          edge is near it only on a band narrower than tol;
+//         FaceAgreement    whether a face agrees with a primitive: the centroid within tol of it and the
+//                          normal within the angle of the primitive's normal there (either side), the angle
+//                          widened linearly to twice its value as the distance goes to 0: on a rough scan the
+//                          local slope of a face that lies on the surface is noise, while a face of another
+//                          surface meeting it at an edge is near it only on a band narrower than tol;
 //         agreeing_share   the share of some faces (by area) that agree, on all of them or, sampled_share, on
 //                          at most kShareSampleCount evenly strided ones;
 //         face_samples     the centroids, normals and areas of at most max_count evenly strided faces, as
@@ -22,6 +22,7 @@
 #ifndef PRIMITIVE_EDIT_GROWING_FACES_H
 #define PRIMITIVE_EDIT_GROWING_FACES_H
 
+#include "common/base/constants.h"
 #include "common/base/primitive.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/mesh/face_adjacency.h"
@@ -83,15 +84,34 @@ inline void face_samples(const GrowingFaces& g, const std::vector<int>& faces, i
   }
 }
 
-inline bool face_agrees(const GrowingFaces& g, const Primitive& prim, int f, double tol, double angle)
+// The cosines of the angle bounds are computed once per loop: a normal within the angle agrees
+// at any distance within tol and one beyond twice the angle at none, so only the faces between need acos (it
+// took 5% of the segmentation). The 1e-9 margins keep every decision the one acos alone gives.
+class FaceAgreement
 {
-  const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
-  const double d = std::abs(pr.signed_distance);
-  if (!(d <= tol))
-    return false;
-  const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
-  return std::acos(c) <= angle * (2.0 - d / tol);
-}
+public:
+  FaceAgreement(double tol, double angle)
+      : tol_(tol), angle_(angle), always_(tol > 0 ? std::cos(angle) + 1e-9 : 2.0),
+        never_(tol > 0 && 2 * angle < kPi / 2 ? std::cos(2 * angle) - 1e-9 : -1.0)
+  {
+  }
+  bool operator()(const GrowingFaces& g, const Primitive& prim, int f) const
+  {
+    const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
+    const double d = std::abs(pr.signed_distance);
+    if (!(d <= tol_))
+      return false;
+    const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+    if (c > always_)
+      return true;
+    if (c < never_)
+      return false;
+    return std::acos(c) <= angle_ * (2.0 - d / tol_);
+  }
+
+private:
+  double tol_, angle_, always_, never_;
+};
 
 // Share (by area) of faces[i * n / count] for count = min(n, max_count) evenly strided faces.
 inline double strided_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
@@ -99,11 +119,12 @@ inline double strided_share(const GrowingFaces& g, const Primitive& prim, const 
 {
   const std::size_t n = faces.size();
   const std::size_t count = std::min(n, max_count);
+  const FaceAgreement agrees(tol, angle);
   double in = 0, all = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const int f = faces[count == n ? i : (i * n) / count];
     all += g.area[std::size_t(f)];
-    if (face_agrees(g, prim, f, tol, angle))
+    if (agrees(g, prim, f))
       in += g.area[std::size_t(f)];
   }
   return all > 0 ? in / all : 0.0;

@@ -9,6 +9,7 @@
 #include "common/segment/segment_by_primitive_growing.h"
 
 #include "meshlab_test_mesh.h"
+#include "test_fit_data.h"
 #include <gtest/gtest.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -395,6 +396,41 @@ TEST(PrimitiveGrowingParams, OutOfRangeIsRefusedByName)
                 p.normal_angle_deg = kMaxGrowingNormalAngleDeg;
                 p.seed_patch_faces = kMinSeedPatchFaces;
               }).empty());
+}
+
+// FaceAgreement skips acos for normals clearly within the angle or beyond twice it; every decision must stay
+// the one the angle test alone gives (the distance-widened angle of growing_faces.h).
+TEST(FaceAgreement, DecidesAsTheAngleTestAlone)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  GrowingFaces g;
+  const int n = 20000;
+  for (int f = 0; f < n; ++f) {
+    g.centroid.emplace_back(3 * uniform(random), 3 * uniform(random), 0.1 * uniform(random));
+    g.normal.push_back(Eigen::Vector3d(uniform(random), uniform(random), 2 * uniform(random)).normalized());
+  }
+  const Primitive plane = test_fit::make_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ());
+  const Primitive sphere = test_fit::make_sphere(Eigen::Vector3d(0, 0, -5), 5);
+  for (const double tol : {0.0, 0.02, 0.08})
+    for (const double angle_deg : {5.0, 25.0, 50.0, 120.0})
+      for (const Primitive& prim : {plane, sphere}) {
+        const double angle = radians_from_degrees(angle_deg);
+        const FaceAgreement agrees(tol, angle);
+        int differ = 0, agreeing = 0;
+        for (int f = 0; f < n; ++f) {
+          const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
+          const double d = std::abs(pr.signed_distance);
+          const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+          const bool expected = d <= tol && std::acos(c) <= angle * (2.0 - d / tol);
+          differ += agrees(g, prim, f) != expected ? 1 : 0;
+          agreeing += expected ? 1 : 0;
+        }
+        EXPECT_EQ(differ, 0) << "tol " << tol << ", angle " << angle_deg;
+        if (tol > 0 && angle_deg < 90) {
+          EXPECT_GT(agreeing, 0);
+        }
+      }
 }
 
 } // namespace
