@@ -104,36 +104,49 @@ inline std::vector<int> seed_order(const GrowingFaces& g, const FaceAdjacency& a
 
 namespace grow_detail {
 
-// Grows region `id` breadth-first (from all its faces: after a refit, faces rejected before may agree) over
-// unassigned faces that agree with prim, refitting it each time the region has grown by half since the last
-// fit. Returns when a walk ends without that growth.
+// Grows region `id` breadth-first (after a refit, faces rejected before may agree) over unassigned faces that
+// agree with prim, refitting it each time the region has grown by half since the last fit. Returns when a walk
+// ends without that growth. Each walk starts from the region's faces that still had an unassigned neighbour
+// after the walk before, in region order, so it adds the same faces in the same order as a walk from the whole
+// region, without rescanning its inside (the region's labels only grow, so a face once closed stays closed).
 inline void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale, int id,
                                 Primitive& prim, std::size_t& fitted_size, std::vector<int>& region,
                                 std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue)
 {
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
   const FaceAgreement agrees(scale.tolerance, scale.angle);
+  std::vector<int> open_faces = region;
   for (;;) {
     const int grow_mark = ++stamps.mark;
-    queue = region;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const int f = queue[head];
+    queue.swap(open_faces);
+    open_faces.clear();
+    std::size_t head = 0;
+    while (head < queue.size()) {
+      const int f = queue[head++];
+      bool open = false;
       for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
         const int h = adj.neighbour[std::size_t(k)];
-        if (stamps.stamp[std::size_t(h)] == grow_mark || !unassigned(h))
+        if (!unassigned(h))
           continue;
-        stamps.stamp[std::size_t(h)] = grow_mark;
-        if (!agrees(g, prim, h))
-          continue;
-        label[std::size_t(h)] = id;
-        region.push_back(h);
-        queue.push_back(h);
+        if (stamps.stamp[std::size_t(h)] != grow_mark) {
+          stamps.stamp[std::size_t(h)] = grow_mark;
+          if (agrees(g, prim, h)) {
+            label[std::size_t(h)] = id;
+            region.push_back(h);
+            queue.push_back(h);
+            continue;
+          }
+        }
+        open = true; // h was rejected, now or earlier in this walk
       }
+      if (open)
+        open_faces.push_back(f);
       if (region.size() >= fitted_size + fitted_size / 2)
         break;
     }
     if (region.size() < fitted_size + fitted_size / 2)
       return;
+    open_faces.insert(open_faces.end(), queue.begin() + std::ptrdiff_t(head), queue.end()); // not walked from yet
     fitted_size = region.size();
     if (const std::optional<Primitive> refined =
             fit_region_primitive(g, region, &prim, scale.tolerance, scale.angle, 0.9))
