@@ -32,7 +32,7 @@ inline std::optional<Primitive> fit_region_primitive(const GrowingFaces& g, cons
     return std::nullopt;
   auto accept = [&](const FitResult& r) {
     return r.status.ok() && primitive_is_valid(r.primitive) &&
-           agreeing_share(g, r.primitive, faces, tol, angle) >= share;
+           agreeing_share_reaches(g, r.primitive, faces, tol, angle, share);
   };
   if (start) {
     FitOptions fast;

@@ -433,4 +433,32 @@ TEST(FaceAgreement, DecidesAsTheAngleTestAlone)
       }
 }
 
+// agreeing_share_reaches stops early; its verdict must be the full share's, also at the share itself and one
+// step above it.
+TEST(AgreeingShareReaches, SameVerdictAsTheFullShare)
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  GrowingFaces g;
+  std::vector<int> faces;
+  for (int f = 0; f < 5000; ++f) {
+    g.centroid.emplace_back(3 * uniform(random), 3 * uniform(random), 0.05 * uniform(random));
+    g.normal.push_back(Eigen::Vector3d(0.3 * uniform(random), 0.3 * uniform(random), 1).normalized());
+    g.area.push_back(0.5 + uniform(random) * 0.4);
+    faces.push_back(f);
+  }
+  const Primitive plane = test_fit::make_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ());
+  for (const double tol : {0.01, 0.03, 0.06}) {
+    const double angle = radians_from_degrees(10);
+    const double share = strided_share(g, plane, faces, tol, angle, faces.size());
+    ASSERT_GT(share, 0.05);
+    ASSERT_LT(share, 0.99);
+    for (const double threshold : {0.0, 0.5 * share, share, std::nextafter(share, 2.0), 0.5 + 0.5 * share, 1.0})
+      EXPECT_EQ(agreeing_share_reaches(g, plane, faces, tol, angle, threshold), share >= threshold)
+          << "tol " << tol << ", share " << share << ", threshold " << threshold;
+  }
+  EXPECT_TRUE(agreeing_share_reaches(g, plane, {}, 0.01, 0.1, 0.0));
+  EXPECT_FALSE(agreeing_share_reaches(g, plane, {}, 0.01, 0.1, 0.5));
+}
+
 } // namespace
