@@ -7,8 +7,8 @@
 // Method: least-significant-digit radix sort on the key's bits, mapped to an unsigned integer whose order is
 //         the doubles' order (negative: all bits flipped; positive: the sign bit set), six passes of 11 bits
 //         (2048 counters, which stay in the L1 cache); a pass whose digit is the same for every key is skipped.
-//         The comparison sort reads two keys at random places per comparison; on a million faces it took
-//         about 0.1 s, a third of the region growth (bench_segment_parts, perf).
+//         The comparison sort it replaces read two keys at random places per comparison; on a million faces
+//         it took about 0.1 s, a quarter of the region growth (bench_segment_parts, perf).
 // Cost:   O(n) time, O(n) extra memory (a key and an item per entry, twice).
 #ifndef PRIMITIVE_EDIT_SORT_BY_KEY_H
 #define PRIMITIVE_EDIT_SORT_BY_KEY_H

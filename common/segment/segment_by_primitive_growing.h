@@ -57,8 +57,8 @@
 //         Faces without a defined normal (zero area, NaN/Inf coordinates) never seed or grow a region; the
 //         final flood gives them the label of a neighbour.
 // Complexity: O(F log F) time (the final priority flood; the seed order is a radix sort); growth visits each
-//         face O(1) times per refit of its region, and refits happen at geometric size steps on subsamples of at most
-//         kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). Merging refits
+//         face O(1) times per refit of its region, and refits happen at geometric size steps on subsamples of
+//         at most kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). Merging refits
 //         each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each region, per
 //         round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
