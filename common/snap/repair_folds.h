@@ -21,10 +21,12 @@
 //         connected part of the region gets up to settle_sweeps more sweeps while its folds have not stalled,
 //         or while it still moves (unconverged, a part that has just unfolded leaves its first rings pressed
 //         against its fixed border).
-// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep.
+// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep; the sweeps
+//         read each vertex's umbrella from a list built on its first visit (lazy_lists.h).
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
 
+#include "common/base/lazy_lists.h"
 #include "common/mesh/vertex_faces.h"
 
 #include <Eigen/Core>
@@ -79,6 +81,7 @@ struct FoldRegion
   const std::vector<int>& face_vertex;
   const VertexFaces& vertex_faces;
   const std::vector<Eigen::Vector3d>& reference;
+  LazyLists& umbrella; // per vertex, the other corners of its faces: what a sweep averages
   std::vector<std::uint8_t> state; // 0: not asked yet, 1: in the region, 2: pinned
   std::vector<int> vertices;
   std::vector<int> folds;
@@ -130,15 +133,17 @@ struct FoldRegion
   {
     double longest = 0;
     for (int v : vertices) {
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      int count = 0;
-      for_faces_of(v, [&](int g) {
-        for (int j = 0; j < 3; ++j)
-          if (corner(g, j) >= 0 && corner(g, j) != v) {
-            sum += position[std::size_t(corner(g, j))];
-            ++count;
-          }
+      const auto [begin, end] = umbrella.get(std::size_t(v), [&](std::vector<int>& out) {
+        for_faces_of(v, [&](int g) {
+          for (int j = 0; j < 3; ++j)
+            if (corner(g, j) >= 0 && corner(g, j) != v)
+              out.push_back(corner(g, j));
+        });
       });
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (const int* u = begin; u != end; ++u)
+        sum += position[std::size_t(*u)];
+      const int count = int(end - begin);
       Eigen::Vector3d target;
       if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite()) {
         longest = std::max(longest, (target - position[std::size_t(v)]).norm());
@@ -263,7 +268,8 @@ int settle(const FoldRegion& region, const std::vector<std::vector<int>>& parts,
   if (options.settle_sweeps <= 0)
     return last;
   for (const std::vector<int>& vertices : parts) {
-    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, {}, vertices, {}};
+    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, region.umbrella, {},
+                    vertices, {}};
     int r = round;
     part.find_folds({}, mark, r++);
     double first_move = -1, move = 0;
@@ -295,7 +301,8 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
                                Movable&& movable, Constrain&& constrain, const RepairFoldsOptions& options = {})
 {
   RepairFoldsReport report;
-  repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference,
+  LazyLists umbrella(position.size());
+  repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference, umbrella,
                                    std::vector<std::uint8_t>(position.size(), 0), {}, {}};
   for (int f = 0; f < int(reference.size()); ++f)
     if (region.folded(f))

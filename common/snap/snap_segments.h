@@ -36,6 +36,7 @@
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/geometry/common_point_of_primitives.h"
 #include "common/base/constants.h"
+#include "common/base/lazy_lists.h"
 #include "common/base/primitive.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/locate_on_surface.h"
@@ -345,7 +346,11 @@ private:
   bool constrain(std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) const
   {
     std::vector<int>& groups = scratch_groups_;  // called for every vertex of every sweep: no allocation
-    gather(v, groups);
+    const auto [begin, end] = repair_groups_.get(v, [&](std::vector<int>& out) {
+      gather(v, groups);
+      out.insert(out.end(), groups.begin(), groups.end());
+    });
+    groups.assign(begin, end);
     if (kind_[v] == kEdge)
       return closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
                                            *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, out);
@@ -385,6 +390,7 @@ private:
       position[v] = now(int(v));
     // Narrow regions first (each fold's own neighbourhood), then wide ones for the folds left (RepairFoldsOptions::widen).
     host_face_.assign(nv, -1);
+    repair_groups_ = LazyLists(nv);
     int rounds = 0;
     for (const bool widen : {false, true}) {
       RepairFoldsOptions options;
@@ -533,6 +539,7 @@ private:
   double max_edge_distance_ = 0;
   std::vector<std::uint8_t> kind_, stage_;
   mutable std::vector<int> scratch_groups_;
+  mutable LazyLists repair_groups_{0}; // gather()'s groups of the vertices the repair's sweeps revisit
   mutable std::vector<int> host_face_; // per vertex of unsnapped faces: the scan's face it slides on, or -1
 };
 
