@@ -133,11 +133,11 @@ struct FoldRegion
   {
     double longest = 0;
     for (int v : vertices) {
-      const auto [begin, end] = umbrella.get(std::size_t(v), [&](std::vector<int>& out) {
+      const auto [begin, end] = umbrella.get(std::size_t(v), [&](std::vector<int>& pool) {
         for_faces_of(v, [&](int g) {
           for (int j = 0; j < 3; ++j)
             if (corner(g, j) >= 0 && corner(g, j) != v)
-              out.push_back(corner(g, j));
+              pool.push_back(corner(g, j));
         });
       });
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();

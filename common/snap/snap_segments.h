@@ -346,9 +346,9 @@ private:
   bool constrain(std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) const
   {
     std::vector<int>& groups = scratch_groups_;  // called for every vertex of every sweep: no allocation
-    const auto [begin, end] = repair_groups_.get(v, [&](std::vector<int>& out) {
+    const auto [begin, end] = repair_groups_.get(v, [&](std::vector<int>& pool) {
       gather(v, groups);
-      out.insert(out.end(), groups.begin(), groups.end());
+      pool.insert(pool.end(), groups.begin(), groups.end());
     });
     groups.assign(begin, end);
     if (kind_[v] == kEdge)
