@@ -301,7 +301,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
                                Movable&& movable, Constrain&& constrain, const RepairFoldsOptions& options = {})
 {
   RepairFoldsReport report;
-  LazyLists umbrella(position.size());
+  LazyLists umbrella(0); // sized once there is a fold to repair
   repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference, umbrella,
                                    std::vector<std::uint8_t>(position.size(), 0), {}, {}};
   for (int f = 0; f < int(reference.size()); ++f)
@@ -309,6 +309,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
       region.folds.push_back(f);
   if (region.folds.empty())
     return report;
+  umbrella = LazyLists(position.size());
 
   const std::vector<Eigen::Vector3d> snapped = position;
   const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
