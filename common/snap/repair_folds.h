@@ -22,7 +22,8 @@
 //         or while it still moves (unconverged, a part that has just unfolded leaves its first rings pressed
 //         against its fixed border).
 // Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep; the sweeps
-//         read each vertex's umbrella from a list built on its first visit (lazy_lists.h).
+//         read each vertex's umbrella from a list built on its first visit (lazy_lists.h), the fold searches the
+//         region's faces from a list extended as the region grows.
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
 
@@ -82,10 +83,18 @@ struct FoldRegion
   const VertexFaces& vertex_faces;
   const std::vector<Eigen::Vector3d>& reference;
   LazyLists& umbrella; // per vertex, the other corners of its faces: what a sweep averages
+  // Per face, the id of the last region that listed it in its faces_around (regions and their parts have ids
+  // of their own; a part's faces belong to no other part).
+  std::vector<int>& lister;
+  int id;
   std::vector<std::uint8_t> state; // 0: not asked yet, 1: in the region, 2: pinned
   std::vector<int> vertices;
   std::vector<int> folds;
   std::size_t last_ring_begin = 0; // vertices[last_ring_begin..] were added by the last grow
+  // The faces around vertices[0..listed_vertices), each once, in the order a walk over the vertices' faces
+  // meets them first: find_folds checks them in that order without walking the vertices again.
+  std::vector<int> faces_around = {};
+  std::size_t listed_vertices = 0;
 
   int corner(int f, int k) const { return face_vertex[3 * std::size_t(f) + std::size_t(k)]; }
   bool folded(int f) const
@@ -156,6 +165,13 @@ struct FoldRegion
   // The folded faces among `first` and the faces around the region, each looked at once (mark = round).
   void find_folds(const std::vector<int>& first, std::vector<int>& mark, int round)
   {
+    for (; listed_vertices < vertices.size(); ++listed_vertices)
+      for_faces_of(vertices[listed_vertices], [&](int f) {
+        if (lister[std::size_t(f)] != id) {
+          lister[std::size_t(f)] = id;
+          faces_around.push_back(f);
+        }
+      });
     folds.clear();
     auto check = [&](int f) {
       if (mark[std::size_t(f)] == round)
@@ -166,8 +182,8 @@ struct FoldRegion
     };
     for (int f : first)
       check(f);
-    for (int v : vertices)
-      for_faces_of(v, check);
+    for (int f : faces_around)
+      check(f);
   }
 
   void save(std::vector<Eigen::Vector3d>& out) const
@@ -267,9 +283,9 @@ int settle(const FoldRegion& region, const std::vector<std::vector<int>>& parts,
   int last = round;
   if (options.settle_sweeps <= 0)
     return last;
-  for (const std::vector<int>& vertices : parts) {
-    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, region.umbrella, {},
-                    vertices, {}};
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    FoldRegion part{region.position, region.face_vertex, region.vertex_faces, region.reference, region.umbrella,
+                    region.lister, region.id + 1 + int(p), {}, parts[p], {}};
     int r = round;
     part.find_folds({}, mark, r++);
     double first_move = -1, move = 0;
@@ -301,8 +317,9 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
                                Movable&& movable, Constrain&& constrain, const RepairFoldsOptions& options = {})
 {
   RepairFoldsReport report;
-  LazyLists umbrella(0); // sized once there is a fold to repair
-  repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference, umbrella,
+  LazyLists umbrella(0); // sized, as lister, once there is a fold to repair
+  std::vector<int> lister;
+  repair_detail::FoldRegion region{position, face_vertex, vertex_faces, reference, umbrella, lister, 0,
                                    std::vector<std::uint8_t>(position.size(), 0), {}, {}};
   for (int f = 0; f < int(reference.size()); ++f)
     if (region.folded(f))
@@ -310,6 +327,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
   if (region.folds.empty())
     return report;
   umbrella = LazyLists(position.size());
+  lister.assign(reference.size(), -1);
 
   const std::vector<Eigen::Vector3d> snapped = position;
   const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
