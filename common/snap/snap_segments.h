@@ -17,8 +17,10 @@
 //         primitive or edge, and vertices of unsnapped faces along the scan's surface as it was (followed
 //         face to face by locate_on_surface, on their side of a crease), until it unfolds
 //         (repaired_vertices counts them). Where a fold remains, one of its moved vertices (the most
-//         snapped, then the most displaced) falls back one step (edge/corner -> single projection ->
-//         original position), repeated until no face flips (reverted_vertices counts them). Corners,
+//         snapped, then the most displaced) falls back one step (edge/corner -> single projection -> the
+//         mean of its neighbours -> original position), repeated until no face flips (reverted_vertices
+//         counts them). The mean comes before the scan because a vertex sent back to a rough scan stands
+//         off its snapped neighbours and folds their faces in turn. Corners,
 //         vertices on the mesh's border, on a crease of unsnapped faces or on the border of a segment
 //         (but along the edge of two primitives) never slide. folded_faces and
 //         folded_area give what is left folded (zero with prevent_flips). A non-finite target leaves the
@@ -87,6 +89,10 @@ class Snapper
   using ScalarType = typename MeshType::ScalarType;
   // kSlid: a vertex of unsnapped faces only, moved by the repair.
   enum Kind : std::uint8_t { kUntouched, kSingle, kEdge, kCorner, kSlid };
+  // How far a vertex has fallen back from where its kind puts it (hold_back): kOnTarget, then, for edges and
+  // corners, kOnNearest (the single projection), then kBetween (the mean of its neighbours), then kAtRest
+  // (where it was; also every untouched vertex).
+  enum Stage : std::uint8_t { kOnTarget, kOnNearest, kBetween, kAtRest };
 
 public:
   Snapper(MeshType& m, const std::vector<int>& segment_of_face,
@@ -237,7 +243,7 @@ private:
   {
     const std::size_t nv = m_.vert.size();
     kind_.assign(nv, kUntouched);
-    stage_.assign(nv, 2);
+    stage_.assign(nv, kAtRest);
     std::vector<int> groups;
     for (std::size_t v = 0; v < nv; ++v) {
       if (m_.vert[v].IsD())
@@ -259,7 +265,7 @@ private:
       if (!representable(target))
         continue;
       kind_[v] = k;
-      stage_[v] = 0;
+      stage_[v] = kOnTarget;
       m_.vert[v].P() = to_coord(target);
     }
   }
@@ -269,7 +275,7 @@ private:
   // primitives, and for a vertex of unsnapped faces, not on a crease.
   bool slidable(std::size_t v) const
   {
-    if (m_.vert[v].IsD() || stage_[v] != (kind_[v] == kUntouched ? 2 : 0) || kind_[v] == kCorner ||
+    if (m_.vert[v].IsD() || stage_[v] != (kind_[v] == kUntouched ? kAtRest : kOnTarget) || kind_[v] == kCorner ||
         !rest(int(v)).allFinite())
       return false;
     std::vector<int> around;
@@ -412,7 +418,7 @@ private:
       m_.vert[v].P() = to_coord(position[v]);
       if (kind_[v] == kUntouched) {
         kind_[v] = kSlid;
-        stage_[v] = 0;
+        stage_[v] = kOnTarget;
       }
       ++report_.repaired_vertices;
     }
@@ -421,7 +427,8 @@ private:
   bool face_is_bad(std::size_t f) const
   {
     const int* c = &face_vertex_[3 * f];
-    if (c[0] < 0 || (stage_[std::size_t(c[0])] == 2 && stage_[std::size_t(c[1])] == 2 && stage_[std::size_t(c[2])] == 2))
+    if (c[0] < 0 || (stage_[std::size_t(c[0])] == kAtRest && stage_[std::size_t(c[1])] == kAtRest &&
+                     stage_[std::size_t(c[2])] == kAtRest))
       return false;
     return face_is_folded(reference_[f], now(c[0]), now(c[1]), now(c[2]));
   }
@@ -433,9 +440,9 @@ private:
     std::pair<int, double> chosen_key(-1, 0.0);
     for (int j = 0; j < 3; ++j) {
       const std::size_t v = std::size_t(face_vertex_[3 * f + std::size_t(j)]);
-      if (stage_[v] == 2)
+      if (stage_[v] == kAtRest)
         continue;
-      const int level = (stage_[v] == 0 && (kind_[v] == kEdge || kind_[v] == kCorner)) ? 1 : 0;
+      const int level = (stage_[v] == kOnTarget && (kind_[v] == kEdge || kind_[v] == kCorner)) ? 1 : 0;
       const std::pair<int, double> key(level, (now(int(v)) - rest(int(v))).norm());
       if (chosen < 0 || key > chosen_key) {
         chosen = static_cast<int>(v);
@@ -445,20 +452,39 @@ private:
     return chosen;
   }
 
-  // One step back: edge/corner -> single projection of the original position -> original position.
+  // One step back: edge/corner -> single projection of the original position -> the mean of the vertex's
+  // neighbours as they are now -> original position. A vertex the repair slid goes straight back: it belongs
+  // to no snapped segment.
   void fall_back(std::size_t v)
   {
-    if (stage_[v] == 0 && (kind_[v] == kEdge || kind_[v] == kCorner)) {
+    if (stage_[v] == kOnTarget && (kind_[v] == kEdge || kind_[v] == kCorner)) {
       std::vector<int> groups;
       gather(v, groups);
       const Eigen::Vector3d target = nearest_projection(groups, rest(int(v)));
       if (representable(target)) {
-        stage_[v] = 1;
+        stage_[v] = kOnNearest;
         m_.vert[v].P() = to_coord(target);
         return;
       }
     }
-    stage_[v] = 2;
+    if (stage_[v] < kBetween && kind_[v] != kSlid) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      int count = 0;
+      for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int u = face_vertex_[3 * std::size_t(vertex_faces_.face[std::size_t(i)]) + std::size_t(j)];
+          if (std::size_t(u) != v) {
+            sum += now(u);
+            ++count;
+          }
+        }
+      if (count > 0 && representable(sum / count)) {
+        stage_[v] = kBetween;
+        m_.vert[v].P() = to_coord(sum / count);
+        return;
+      }
+    }
+    stage_[v] = kAtRest;
     m_.vert[v].P() = original_[v];
   }
 
@@ -505,12 +531,12 @@ private:
   {
     double displacement_sum = 0;
     for (std::size_t v = 0; v < m_.vert.size(); ++v) {
-      if (kind_[v] == kUntouched || stage_[v] == 2)
+      if (kind_[v] == kUntouched || stage_[v] == kAtRest)
         continue;
       ++report_.moved_vertices;
-      if (stage_[v] == 0 && kind_[v] == kEdge)
+      if (stage_[v] == kOnTarget && kind_[v] == kEdge)
         ++report_.edge_vertices;
-      if (stage_[v] == 0 && kind_[v] == kCorner)
+      if (stage_[v] == kOnTarget && kind_[v] == kCorner)
         ++report_.corner_vertices;
       const double d = (now(int(v)) - rest(int(v))).norm();
       displacement_sum += d;

@@ -340,6 +340,45 @@ TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
   EXPECT_EQ(eig(m.vert[2].cP()), inner);
 }
 
+// The same inner vertex with a third neighbour below: its projection still flips a face, but the mean of its
+// neighbours folds none, so it stops there instead of going back to where it was (the repair is off, so that the
+// hold-back alone is tested).
+TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBackBetweenItsNeighbours)
+{
+  using M = TypeParam;
+  Soup s;
+  const Eigen::Vector3d below = Eigen::Vector3d(0.6, 0.6, -0.8).normalized();
+  s.points = {{1, 0, 0}, {0, 1, 0}, {below.x(), below.y(), below.z()}, {0.3, 0.3, -0.01}};
+  s.triangles = {{3, 0, 1}, {3, 1, 2}, {3, 2, 0}};
+  s.labels = {0, 0, 0};
+  Primitive ball;
+  ball.type = PrimitiveType::Sphere;
+  ball.radius = 1;
+  SnapOptions options;
+  options.repair_folds = false;
+
+  M unguarded;
+  build_mesh(unguarded, s);
+  const Eigen::Vector3d before = face_normal(unguarded, 0);
+  options.prevent_flips = false;
+  snap_segments(unguarded, s.labels, {ball}, options);
+  ASSERT_LT(face_normal(unguarded, 0).dot(before), 0) << "the setup must flip without the guard";
+
+  M m;
+  build_mesh(m, s);
+  std::vector<Eigen::Vector3d> normals;
+  for (int f = 0; f < 3; ++f)
+    normals.push_back(face_normal(m, f));
+  options.prevent_flips = true;
+  const SnapReport report = snap_segments(m, s.labels, {ball}, options);
+  for (int f = 0; f < 3; ++f)
+    EXPECT_GT(face_normal(m, f).dot(normals[size_t(f)]), 0) << "face " << f;
+  EXPECT_EQ(report.reverted_vertices, 1);
+  EXPECT_EQ(report.folded_faces, 0);
+  const Eigen::Vector3d mean = (Eigen::Vector3d(1, 0, 0) + Eigen::Vector3d(0, 1, 0) + below) / 3;
+  EXPECT_LT((eig(m.vert[3].cP()) - mean).norm(), tolerance<M>(1.0));
+}
+
 // Vertices of unsnapped segments only are untouched; their boundary with a snapped segment is snapped.
 TYPED_TEST(SnapSegmentsTest, UnsnappedSegmentsUntouched)
 {
