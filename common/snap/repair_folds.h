@@ -242,9 +242,11 @@ struct FoldRegion
 };
 
 // Whether a region's folds still fall, check by check. A count under kStallFactor of the fewest so far is
-// progress; a count above the last one is a region still taking folds in as it grows onto them; anything else
-// is a stall, and two in a row end the region's repair. The bundled scan's regions, which never unfold, lose
-// 0.2-2% of their folds a check by then; a widened hole's rim loses 4-60%, after rising for a few rounds.
+// progress; a count above the last one, before the folds first fell, is a region still taking folds in as it
+// grows onto them (the first sweeps fold more faces than they unfold); anything else is a stall, and two in a
+// row end the region's repair. A widened hole's rim rises at the first check, then loses 4-60% a check. A
+// scan's regions, which never unfold, lose 0.2-5% a check and then rise again as the sweeps over a growing
+// region fold new faces at its pinned borders (at 1M faces from round 5 of 12 on, the wide region doubling).
 constexpr double kStallFactor = 0.95;
 
 class FoldTrend
@@ -254,7 +256,9 @@ public:
   // Records this check's count; true once the folds have stalled twice in a row.
   bool stalled(std::size_t folds)
   {
-    if (folds == 0 || folds > last_ || double(folds) < kStallFactor * double(fewest_)) {
+    const bool taking_in = folds > last_ && !fell_;
+    fell_ = fell_ || folds < last_;
+    if (folds == 0 || taking_in || double(folds) < kStallFactor * double(fewest_)) {
       fewest_ = folds;
       stalls_ = 0;
     } else {
@@ -266,6 +270,7 @@ public:
 
 private:
   std::size_t last_, fewest_;
+  bool fell_ = false;
   int stalls_ = 0;
 };
 

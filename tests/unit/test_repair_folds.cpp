@@ -99,3 +99,19 @@ TEST(RepairFolds, UnrepairableFoldElsewhereDoesNotCutTheSettleShort)
                                     (a.points[std::size_t(a.id(i, j))] - b.points[std::size_t(b.id(i, j))]).norm());
   EXPECT_EQ(largest_difference, 0.0);
 }
+
+// The fold counts of two repairs, check by check (printed by a scratch build): a widened hole's rim, whose first
+// sweeps fold more faces than there were before they unfold them all, must not stall; a 1M-face scan's wide
+// region, whose folds fall slowly and then rise as the growing region's sweeps fold new faces at its pinned
+// borders, must stall at the first rise after the fall instead of growing on.
+TEST(RepairFolds, FoldTrendTakesFoldsInOnlyBeforeTheyFirstFall)
+{
+  repair_detail::FoldTrend rim(256);
+  for (const std::size_t folds : {704, 338, 82, 0})
+    EXPECT_FALSE(rim.stalled(folds)) << folds;
+
+  repair_detail::FoldTrend scan(7250);
+  for (const std::size_t folds : {9832, 8306, 7913, 7654, 7574})
+    EXPECT_FALSE(scan.stalled(folds)) << folds;
+  EXPECT_TRUE(scan.stalled(7665));
+}
