@@ -242,12 +242,14 @@ struct FoldRegion
 };
 
 // Whether a region's folds still fall, check by check. A count under kStallFactor of the fewest so far is
-// progress; a count above the last one, before the folds first fell, is a region still taking folds in as it
-// grows onto them (the first sweeps fold more faces than they unfold); anything else is a stall, and two in a
-// row end the region's repair. A widened hole's rim rises at the first check, then loses 4-60% a check. A
-// scan's regions, which never unfold, lose 0.2-5% a check and then rise again as the sweeps over a growing
-// region fold new faces at its pinned borders (at 1M faces from round 5 of 12 on, the wide region doubling).
+// progress; a count above the last one, in the first kTakingInChecks checks and before the folds first fell,
+// is a region still taking folds in as it grows onto them (the first sweeps fold more faces than they unfold);
+// anything else is a stall, and two in a row end the region's repair. A widened hole's rim rises at the first
+// check, then loses 4-60% a check. A scan's regions, which never unfold, either lose 0.2-5% a check and then
+// rise again, or rise from the start, as the sweeps over a growing region fold new faces at its pinned borders
+// (1M and 4M faces: 12 rounds for nothing, the wide region growing to 194k and 406k vertices).
 constexpr double kStallFactor = 0.95;
+constexpr int kTakingInChecks = 3;
 
 class FoldTrend
 {
@@ -256,7 +258,8 @@ public:
   // Records this check's count; true once the folds have stalled twice in a row.
   bool stalled(std::size_t folds)
   {
-    const bool taking_in = folds > last_ && !fell_;
+    ++checks_;
+    const bool taking_in = folds > last_ && !fell_ && checks_ <= kTakingInChecks;
     fell_ = fell_ || folds < last_;
     if (folds == 0 || taking_in || double(folds) < kStallFactor * double(fewest_)) {
       fewest_ = folds;
@@ -271,6 +274,7 @@ public:
 private:
   std::size_t last_, fewest_;
   bool fell_ = false;
+  int checks_ = 0;
   int stalls_ = 0;
 };
 

@@ -100,11 +100,12 @@ TEST(RepairFolds, UnrepairableFoldElsewhereDoesNotCutTheSettleShort)
   EXPECT_EQ(largest_difference, 0.0);
 }
 
-// The fold counts of two repairs, check by check (printed by a scratch build): a widened hole's rim, whose first
+// The fold counts of three repairs, check by check (printed by a scratch build): a widened hole's rim, whose first
 // sweeps fold more faces than there were before they unfold them all, must not stall; a 1M-face scan's wide
 // region, whose folds fall slowly and then rise as the growing region's sweeps fold new faces at its pinned
-// borders, must stall at the first rise after the fall instead of growing on.
-TEST(RepairFolds, FoldTrendTakesFoldsInOnlyBeforeTheyFirstFall)
+// borders, must stall at the first rise after the fall instead of growing on; a 4M-face scan's narrow region
+// (MeshLab's segments), whose folds rise from the start, must stall once the first checks are past.
+TEST(RepairFolds, FoldTrendTakesFoldsInOnlyAtFirst)
 {
   repair_detail::FoldTrend rim(256);
   for (const std::size_t folds : {704, 338, 82, 0})
@@ -114,4 +115,9 @@ TEST(RepairFolds, FoldTrendTakesFoldsInOnlyBeforeTheyFirstFall)
   for (const std::size_t folds : {9832, 8306, 7913, 7654, 7574})
     EXPECT_FALSE(scan.stalled(folds)) << folds;
   EXPECT_TRUE(scan.stalled(7665));
+
+  repair_detail::FoldTrend rising(11962);
+  for (const std::size_t folds : {17810, 18051, 18826, 19287})
+    EXPECT_FALSE(rising.stalled(folds)) << folds;
+  EXPECT_TRUE(rising.stalled(19742));
 }
