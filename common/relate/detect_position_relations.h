@@ -8,7 +8,8 @@
 // Output: the relations found, at most one per pair of segments and kind, without cycles within a kind
 //         (each kind's relations form a forest over the segments, so that no group is tied twice):
 //           Coaxial      two axes (cylinder, cone, torus) within the angle and each origin within the
-//                        distance of the other's axis;
+//                        distance of the other's axis (a cone's apex: the foot of the other's origin on its
+//                        axis instead, axis_point_facing);
 //           Concentric   sphere centres within the distance; a sphere's centre within it of a cylinder's or
 //                        cone's axis, or of a torus's centre; two coaxial tori whose centres are within it;
 //           Coplanar     two planes within the angle, each origin within the distance of the other plane;
@@ -48,6 +49,17 @@ inline double distance_to_axis(const Primitive& p, const Eigen::Vector3d& x)
 {
   const Eigen::Vector3d v = x - p.origin;
   return (v - v.dot(p.axis) * p.axis).norm();
+}
+
+// The point of p's axis at which its offset from other's axis is measured: p's origin (a cylinder's is the axis
+// point nearest its points, a torus's its centre), except a cone's apex, which on a slender cone lies far
+// beyond the band its points cover (the boss of the bundled bracket: 60 mm off), so that a tilt within the
+// angle tolerance moved it millimetres off a coaxial bore's axis; there, the foot of other's origin.
+inline Eigen::Vector3d axis_point_facing(const Primitive& p, const Primitive& other)
+{
+  if (p.type != PrimitiveType::Cone || other.type == PrimitiveType::Cone)
+    return p.origin;
+  return p.origin + p.axis.dot(other.origin - p.origin) * p.axis;
 }
 
 inline int find_root(std::vector<int>& parent, int s)
@@ -101,7 +113,8 @@ inline std::vector<Relation> detect_position_relations(const std::vector<const P
         add(std::abs(ra - rb) / max_distance, RelationKind::EqualRadius, a, b);
       if (has_axis(pa) && has_axis(pb)) {
         const double angle = axis_angle(pa, pb);
-        const double offset = std::max(distance_to_axis(pa, pb.origin), distance_to_axis(pb, pa.origin));
+        const double offset = std::max(distance_to_axis(pa, axis_point_facing(pb, pa)),
+                                       distance_to_axis(pb, axis_point_facing(pa, pb)));
         const double sign = pa.axis.dot(pb.axis) < 0 ? -1.0 : 1.0;
         const double deviation = std::max(angle / max_angle, offset / max_distance);
         const bool tori = pa.type == PrimitiveType::Torus && pb.type == PrimitiveType::Torus;

@@ -247,6 +247,59 @@ TEST(Relations, AnExactPartStaysExact)
   }
 }
 
+// Points on a cone band: heights [h0, h1] along the axis from the apex, all the way round.
+Patch cone_patch(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis, double half_angle, double h0, double h1,
+                 int n, double sigma, unsigned seed)
+{
+  Patch p;
+  p.truth.type = PrimitiveType::Cone;
+  p.truth.origin = apex;
+  p.truth.axis = axis.normalized();
+  p.truth.half_angle = half_angle;
+  const Eigen::Vector3d e1 = any_orthogonal(p.truth.axis), e2 = p.truth.axis.cross(e1);
+  std::mt19937 rng(seed + 1000);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  p.samples.points.resize(n, 3);
+  p.samples.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * kPi * U(rng), h = h0 + (h1 - h0) * U(rng);
+    const Eigen::Vector3d r = std::cos(a) * e1 + std::sin(a) * e2;
+    p.samples.points.row(i) = (apex + h * p.truth.axis + h * std::tan(half_angle) * r).transpose();
+    p.samples.normals.row(i) = (std::cos(half_angle) * r - std::sin(half_angle) * p.truth.axis).transpose();
+  }
+  p.samples.area = kPi * (h0 + h1) * std::tan(half_angle) * (h1 - h0) / std::cos(half_angle);
+  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
+  add_noise(p.samples, sigma, seed);
+  return p;
+}
+
+// A slender boss (a 5 degree draft, its apex 69 mm below the band) over its bore, both fitted to noisy points:
+// the boss's fitted axis is a little off the bore's, which at the apex is millimetres, not at the band.
+TEST(Relations, ASlenderConeIsCoaxialWithItsBore)
+{
+  const double sigma = 0.05, half_angle = radians_from_degrees(5);
+  const Eigen::Vector3d Z = Eigen::Vector3d::UnitZ(), centre(30, 20, 0);
+  const Patch bore = cylinder_patch(centre, Z, 3.5, 6, 0, 2 * kPi, 1500, sigma, 21);
+  const Patch boss = cone_patch(centre - 6.0 / std::tan(half_angle) * Z, Z, half_angle, 6.0 / std::tan(half_angle),
+                                6.0 / std::tan(half_angle) + 6, 1500, sigma, 22);
+  std::vector<Primitive> fitted;
+  std::vector<FitInformation> info;
+  for (const Patch* p : {&bore, &boss}) {
+    const FitResult r = fit_primitive(p->truth.type, p->samples.points, p->samples.normals, p->samples.weights);
+    ASSERT_TRUE(r.status.ok()) << r.status.error;
+    fitted.push_back(r.primitive);
+    info.push_back(fit_information(r.primitive, p->samples.points, p->samples.weights));
+  }
+  const double tilt = angle_deg(fitted[0].axis, fitted[1].axis);
+  const Eigen::Vector3d apex_offset = fitted[1].origin - fitted[0].origin;
+  ASSERT_GT((apex_offset - apex_offset.dot(fitted[0].axis) * fitted[0].axis).norm(), 3 * sigma)
+      << "the boss's apex lies on the bore's axis: nothing to show (tilt " << tilt << " degrees)";
+  const std::vector<Relation> found = detect_position_relations({&fitted[0], &fitted[1]}, info, {},
+                                                                radians_from_degrees(10), 3 * sigma, 1.0, 60);
+  SCOPED_TRACE(describe(found));
+  EXPECT_TRUE(has_relation(found, RelationKind::Coaxial, 0, 1)) << "tilt " << tilt << " degrees";
+}
+
 TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
 {
   const Scene scene = make_part(0.05);
