@@ -34,6 +34,27 @@ void add_noise(SegmentSamples& s, double sigma, unsigned seed)
     s.points.row(i) += sigma * N(rng) * s.normals.row(i);
 }
 
+// Fills p.samples with n points of a curved patch of the given area: for each, two uniform draws in [0, 1)
+// (the angle's first) go to `place(u, v, point, normal)`; then the noise.
+template <class Place>
+void sample_patch(Patch& p, int n, double area, double sigma, unsigned seed, Place&& place)
+{
+  std::mt19937 rng(seed + 1000);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  p.samples.points.resize(n, 3);
+  p.samples.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double u = U(rng), v = U(rng);
+    Eigen::Vector3d point, normal;
+    place(u, v, point, normal);
+    p.samples.points.row(i) = point.transpose();
+    p.samples.normals.row(i) = normal.transpose();
+  }
+  p.samples.area = area;
+  p.samples.weights = Eigen::VectorXd::Constant(n, area / n);
+  add_noise(p.samples, sigma, seed);
+}
+
 Patch plane_patch(const Eigen::Vector3d& corner, const Eigen::Vector3d& u, const Eigen::Vector3d& v, int n, double sigma,
                   unsigned seed)
 {
@@ -64,19 +85,12 @@ Patch cylinder_patch(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, d
   p.truth.axis = axis.normalized();
   p.truth.radius = radius;
   const Eigen::Vector3d e1 = any_orthogonal(p.truth.axis), e2 = p.truth.axis.cross(e1);
-  std::mt19937 rng(seed + 1000);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  p.samples.points.resize(n, 3);
-  p.samples.normals.resize(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double a = a0 + (a1 - a0) * U(rng);
-    const Eigen::Vector3d r = std::cos(a) * e1 + std::sin(a) * e2;
-    p.samples.points.row(i) = (base + height * U(rng) * p.truth.axis + radius * r).transpose();
-    p.samples.normals.row(i) = r.transpose();
-  }
-  p.samples.area = radius * (a1 - a0) * height;
-  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
-  add_noise(p.samples, sigma, seed);
+  sample_patch(p, n, radius * (a1 - a0) * height, sigma, seed,
+               [&](double u, double v, Eigen::Vector3d& point, Eigen::Vector3d& normal) {
+                 const double a = a0 + (a1 - a0) * u;
+                 normal = std::cos(a) * e1 + std::sin(a) * e2;
+                 point = base + height * v * p.truth.axis + radius * normal;
+               });
   return p;
 }
 
@@ -84,20 +98,16 @@ Patch cylinder_patch(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, d
 Patch fillet_patch(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, const Eigen::Vector3d& from,
                    const Eigen::Vector3d& to, double radius, double length, int n, double sigma, unsigned seed)
 {
-  Patch p = cylinder_patch(base, axis, radius, length, 0, 1, 1, 0, seed);
-  std::mt19937 rng(seed + 1000);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  p.samples.points.resize(n, 3);
-  p.samples.normals.resize(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = U(rng);
-    const Eigen::Vector3d r = (std::cos(t * kPi / 2) * from + std::sin(t * kPi / 2) * to).normalized();
-    p.samples.points.row(i) = (base + length * U(rng) * p.truth.axis + radius * r).transpose();
-    p.samples.normals.row(i) = r.transpose();
-  }
-  p.samples.area = radius * kPi / 2 * length;
-  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
-  add_noise(p.samples, sigma, seed);
+  Patch p;
+  p.truth.type = PrimitiveType::Cylinder;
+  p.truth.origin = base;
+  p.truth.axis = axis.normalized();
+  p.truth.radius = radius;
+  sample_patch(p, n, radius * kPi / 2 * length, sigma, seed,
+               [&](double u, double v, Eigen::Vector3d& point, Eigen::Vector3d& normal) {
+                 normal = (std::cos(u * kPi / 2) * from + std::sin(u * kPi / 2) * to).normalized();
+                 point = base + length * v * p.truth.axis + radius * normal;
+               });
   return p;
 }
 
@@ -257,19 +267,13 @@ Patch cone_patch(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis, doubl
   p.truth.axis = axis.normalized();
   p.truth.half_angle = half_angle;
   const Eigen::Vector3d e1 = any_orthogonal(p.truth.axis), e2 = p.truth.axis.cross(e1);
-  std::mt19937 rng(seed + 1000);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  p.samples.points.resize(n, 3);
-  p.samples.normals.resize(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * kPi * U(rng), h = h0 + (h1 - h0) * U(rng);
-    const Eigen::Vector3d r = std::cos(a) * e1 + std::sin(a) * e2;
-    p.samples.points.row(i) = (apex + h * p.truth.axis + h * std::tan(half_angle) * r).transpose();
-    p.samples.normals.row(i) = (std::cos(half_angle) * r - std::sin(half_angle) * p.truth.axis).transpose();
-  }
-  p.samples.area = kPi * (h0 + h1) * std::tan(half_angle) * (h1 - h0) / std::cos(half_angle);
-  p.samples.weights = Eigen::VectorXd::Constant(n, p.samples.area / n);
-  add_noise(p.samples, sigma, seed);
+  sample_patch(p, n, kPi * (h0 + h1) * std::tan(half_angle) * (h1 - h0) / std::cos(half_angle), sigma, seed,
+               [&](double u, double v, Eigen::Vector3d& point, Eigen::Vector3d& normal) {
+                 const double h = h0 + (h1 - h0) * v;
+                 const Eigen::Vector3d r = std::cos(2 * kPi * u) * e1 + std::sin(2 * kPi * u) * e2;
+                 point = apex + h * p.truth.axis + h * std::tan(half_angle) * r;
+                 normal = std::cos(half_angle) * r - std::sin(half_angle) * p.truth.axis;
+               });
   return p;
 }
 
