@@ -73,6 +73,9 @@ struct SnapOptions
 struct SnapReport
 {
   int moved_vertices = 0, edge_vertices = 0, corner_vertices = 0, reverted_vertices = 0;
+  // Vertices on faces of two or more snapped primitives, where edges and corners go: edge_vertices +
+  // corner_vertices of them made it, the rest stand off their edge (out of reach, held back, sharp_edges off).
+  int border_vertices = 0;
   int repaired_vertices = 0; // slid along their surface to unfold faces
   int folded_faces = 0;      // left folded (normal turned over or area collapsed); 0 with prevent_flips
   double folded_area = 0;    // their area before snapping
@@ -252,6 +255,8 @@ private:
       const Eigen::Vector3d p = rest(int(v));
       if (groups.empty() || !p.allFinite())
         continue;
+      if (groups.size() >= 2)
+        ++report_.border_vertices;
       Eigen::Vector3d target;
       Kind k = kSingle;
       if (options_.sharp_edges && groups.size() == 2 &&

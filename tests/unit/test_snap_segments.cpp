@@ -168,6 +168,7 @@ TYPED_TEST(SnapSegmentsTest, CylinderRadiusOverride)
   const SnapReport report = snap_segments(m, tube.labels, {edited});
   EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()));
   EXPECT_EQ(report.edge_vertices, 0);
+  EXPECT_EQ(report.border_vertices, 0);
   EXPECT_EQ(report.reverted_vertices, 0);
   double mean = 0, worst = 0;
   for (const auto& v : m.vert) {
@@ -216,6 +217,7 @@ TYPED_TEST(SnapSegmentsTest, BoxEdgesAndCornersBecomeSharp)
   EXPECT_EQ(corners, 8);
   EXPECT_EQ(report.corner_vertices, 8);
   EXPECT_EQ(report.edge_vertices, edges);
+  EXPECT_EQ(report.border_vertices, corners + edges);
   EXPECT_EQ(report.reverted_vertices, 0);
   EXPECT_EQ(report.moved_vertices, static_cast<int>(m.vert.size()));
   for (size_t f = 0; f < m.face.size(); ++f) {
@@ -277,6 +279,7 @@ TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
   build_mesh(sharp, s);
   const SnapReport report = snap_segments(sharp, s.labels, {wall, top});
   EXPECT_EQ(report.edge_vertices, around);
+  EXPECT_EQ(report.border_vertices, around);
   EXPECT_EQ(report.reverted_vertices, 0);
   for (int j = 0; j < around; ++j) {
     const Eigen::Vector3d x = eig(sharp.vert[static_cast<size_t>(rim + j)].cP());
@@ -298,6 +301,7 @@ TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
   options.sharp_edges = false;
   const SnapReport soft_report = snap_segments(soft, s.labels, {wall, top}, options);
   EXPECT_EQ(soft_report.edge_vertices, 0);
+  EXPECT_EQ(soft_report.border_vertices, around); // still on the border, but left off its edge
   int on_both = 0;
   for (int j = 0; j < around; ++j) {
     const Eigen::Vector3d x = eig(soft.vert[static_cast<size_t>(rim + j)].cP());
