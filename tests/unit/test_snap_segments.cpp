@@ -2,6 +2,7 @@
 // edges and corners, flip prevention, unsnapped segments and bad input.
 #include "common/base/constants.h"
 #include "common/geometry/closest_point_on_primitive.h"
+#include "common/snap/describe_snap_report.h"
 #include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
 #include "test_fit_data.h"
@@ -567,4 +568,28 @@ TYPED_TEST(SnapSegmentsTest, WidenedHoleRepairsFoldsInsteadOfHoldingBack)
   expect_widened_hole_repaired<TypeParam>(3.0);
   expect_widened_hole_repaired<TypeParam>(3.8);
   expect_widened_hole_repaired<TypeParam>(3.8, 0.02);
+}
+
+// The log line says how many border vertices reached their edge or corner, and says nothing of borders when the
+// snap had none (one segment alone).
+TEST(DescribeSnapReport, GivesTheBorderShareOnlyWhenThereIsABorder)
+{
+  SnapReport r;
+  r.moved_vertices = 1200;
+  r.edge_vertices = 64;
+  r.corner_vertices = 8;
+  r.border_vertices = 80;
+  r.repaired_vertices = 96;
+  EXPECT_EQ(describe_snap_report(r).rfind("1200 vertices moved (64 onto edges and 8 onto corners of the 80 on borders "
+                                          "between segments; 96 slid along their surfaces",
+                                          0),
+            0u)
+      << describe_snap_report(r);
+  r.edge_vertices = r.corner_vertices = r.border_vertices = 0;
+  r.folded_faces = 3;
+  r.folded_area = 0.5;
+  const std::string alone = describe_snap_report(r);
+  EXPECT_EQ(alone.rfind("1200 vertices moved (96 slid along", 0), 0u) << alone;
+  EXPECT_EQ(alone.find("border"), std::string::npos) << alone;
+  EXPECT_NE(alone.find("; 3 triangles left folded (area 0.5)"), std::string::npos) << alone;
 }
