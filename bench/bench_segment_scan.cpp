@@ -246,8 +246,8 @@ int main(int argc, char** argv)
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner of %d "
               "on borders, %d slid to unfold faces, %d held back), %d faces left folded (area %.4g)\n",
               result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
-              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices, snap.folded_faces,
-              snap.folded_area);
+              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices,
+              snap.folded_faces, snap.folded_area);
   if (!fits_path.empty()) {
     std::ofstream out(fits_path);
     write_fits_json(out, result, scan_path, true);
