@@ -219,7 +219,8 @@ def main():
             "sharp" if sharp else "tangent", len(d), describe(d)))
         if a.fits:
             o = np.concatenate(on[sharp]) if on[sharp] else np.array([], bool)
-            print("  on their fitted edge: %d (%.1f%%), %s" % (o.sum(), 100.0 * o.mean() if len(o) else 0, describe(d[o])))
+            print("  on their fitted edge: %d (%.1f%%), %s" % (
+                o.sum(), 100.0 * o.mean() if len(o) else 0, describe(d[o])))
             print("  off it: %d, %s" % ((~o).sum(), describe(d[~o])))
         print("  CAD length %.1f mm, with a border edge within %s" % (length[sharp], ", ".join(
             "%g mm %.1f%%" % (r, 100.0 * c / max(length[sharp], 1e-300)) for r, c in zip(NEAR_MM, covered[sharp]))))
