@@ -37,6 +37,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fit_errors import closest, fitted_primitive  # noqa: E402
 from meshlab_script import read_ply  # noqa: E402
+from offset_ceiling import majority  # noqa: E402
 from score_segmentation import read_truth  # noqa: E402
 
 SHARP_DEGREES = 10.0
@@ -74,14 +75,6 @@ def interior_edges(faces):
 def face_normals(v, f):
     n = np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
     return n / np.maximum(np.linalg.norm(n, axis=1), 1e-300)[:, None]
-
-
-def majority(keys, values, weights):
-    """Per key, the value of the largest total weight."""
-    pairs, inverse = np.unique(np.stack([keys, values], axis=1), axis=0, return_inverse=True)
-    total = np.bincount(inverse.reshape(-1), weights=weights)
-    order = np.lexsort((total, pairs[:, 0]))  # by key, heaviest last: the last write per key wins
-    return dict(zip(pairs[order, 0].tolist(), pairs[order, 1].tolist()))
 
 
 def cad_edges(ref_v, ref_f, ref_surface):
@@ -130,13 +123,13 @@ def on_fitted_edge(v, va, vb, g0, g1, fits_json):
     if not fits_json:
         return out
     prims = {s["id"]: fitted_primitive(s) for s in json.load(open(fits_json))["segments"]}
-    for ends in (va, vb):
-        for pair in np.unique(np.stack([g0, g1], axis=1), axis=0):
-            pa, pb = prims.get(int(pair[0])), prims.get(int(pair[1]))
-            if pa is None or pb is None:
-                continue
-            k = ends[(g0 == pair[0]) & (g1 == pair[1])]
-            out[k] |= np.maximum(closest(pa, v[k])[1], closest(pb, v[k])[1]) < ON_EDGE_MM
+    for pair in np.unique(np.stack([g0, g1], axis=1), axis=0):
+        pa, pb = prims.get(int(pair[0])), prims.get(int(pair[1]))
+        if pa is None or pb is None:
+            continue
+        edges = (g0 == pair[0]) & (g1 == pair[1])
+        k = np.unique(np.concatenate([va[edges], vb[edges]]))
+        out[k] |= np.maximum(closest(pa, v[k])[1], closest(pb, v[k])[1]) < ON_EDGE_MM
     return out
 
 
@@ -163,7 +156,7 @@ def main():
 
     v, f, segment = load(a.mesh, a.segments is None)
     if a.segments:
-        sv, sf, segment = load(a.segments, True)
+        _, sf, segment = load(a.segments, True)
         if not np.array_equal(sf, f):
             raise SystemExit("%s and %s: not the same faces" % (a.segments, a.mesh))
     truth = read_truth(a.truth)
@@ -171,13 +164,13 @@ def main():
         raise SystemExit("truth has %d faces, mesh %d" % (len(truth), len(f)))
     face_surface = np.array([surface_of.get(t, -1) for t in truth])
     known = (segment >= 0) & (face_surface >= 0)
-    stands_for = majority(segment[known], face_surface[known], np.ones(int(known.sum())))
+    stands_for = dict(zip(*(x.tolist() for x in majority(segment[known], face_surface[known]))))
 
     va, vb, f0, f1 = interior_edges(f)
     border = (segment[f0] != segment[f1]) & (segment[f0] >= 0) & (segment[f1] >= 0)
-    s0 = np.array([stands_for.get(s, -1) for s in segment[f0[border]].tolist()], int)
-    s1 = np.array([stands_for.get(s, -1) for s in segment[f1[border]].tolist()], int)
     va, vb, g0, g1 = va[border], vb[border], segment[f0[border]], segment[f1[border]]
+    s0 = np.array([stands_for.get(s, -1) for s in g0.tolist()], int)
+    s1 = np.array([stands_for.get(s, -1) for s in g1.tolist()], int)
     on_edge = on_fitted_edge(v, va, vb, g0, g1, a.fits)
     between = (s0 != s1) & (s0 >= 0) & (s1 >= 0)
     keys = np.stack([np.minimum(s0, s1), np.maximum(s0, s1)], axis=1)

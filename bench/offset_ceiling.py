@@ -53,17 +53,23 @@ def outward_normals(prim, x, p):
     raise ValueError(t)
 
 
+def majority(keys, values):
+    """The distinct keys and, for each, its most frequent value (ties: the largest value)."""
+    pairs, counts = np.unique(np.stack([keys, values], axis=1), axis=0, return_counts=True)
+    pairs = pairs[np.lexsort((counts, pairs[:, 0]))]  # by key, most frequent last
+    last = np.ones(len(pairs), bool)
+    last[:-1] = pairs[1:, 0] != pairs[:-1, 0]
+    return pairs[last, 0], pairs[last, 1]
+
+
 def majority_surface(faces, face_surface, vertex_count):
     """Per vertex, the surface most of its faces belong to (-1: none known)."""
     corner_vertex = faces.reshape(-1)
     corner_surface = np.repeat(face_surface, 3)
     known = corner_surface >= 0
-    keys, counts = np.unique(np.stack([corner_vertex[known], corner_surface[known]], axis=1), axis=0,
-                             return_counts=True)
-    order = np.lexsort((counts, keys[:, 0]))  # by vertex, most faces last
-    keys = keys[order]
+    vertex, surface = majority(corner_vertex[known], corner_surface[known])
     out = np.full(vertex_count, -1)
-    out[keys[:, 0]] = keys[:, 1]  # the last write per vertex wins: its most frequent surface
+    out[vertex] = surface
     return out
 
 
