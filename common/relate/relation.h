@@ -135,6 +135,9 @@ inline void relation_residual(const Relation& r, const Primitive& a, const Primi
   const Eigen::Vector3d& da = a.axis;
   const Eigen::Vector3d db = r.sign * b.axis;
   const Eigen::Vector3d d = b.origin - a.origin;
+  // b's origin off a's axis, measured from the axis a has now (not through the step's fixed frame, which
+  // would turn a long d along the axis into an offset: a cone's apex lies far along it).
+  const Eigen::Vector3d off = d - d.dot(da) * da;
   auto parallel = [&](double* o) {
     o[0] = length * frame.e1.dot(db - da);
     o[1] = length * frame.e2.dot(db - da);
@@ -145,8 +148,8 @@ inline void relation_residual(const Relation& r, const Primitive& a, const Primi
   case RelationKind::Angle: out[0] = length * (da.dot(db) - std::cos(radians_from_degrees(r.angle_deg))); return;
   case RelationKind::Coaxial:
     parallel(out);
-    out[2] = frame.e1.dot(d);
-    out[3] = frame.e2.dot(d);
+    out[2] = frame.e1.dot(off);
+    out[3] = frame.e2.dot(off);
     return;
   case RelationKind::Coplanar:
     parallel(out);
@@ -161,12 +164,12 @@ inline void relation_residual(const Relation& r, const Primitive& a, const Primi
   case RelationKind::Concentric:
     if (a.type == PrimitiveType::Torus && b.type == PrimitiveType::Torus) {
       parallel(out);
-      out[2] = frame.e1.dot(d);
-      out[3] = frame.e2.dot(d);
+      out[2] = frame.e1.dot(off);
+      out[3] = frame.e2.dot(off);
       out[4] = da.dot(d);
     } else if (has_axis(a) && b.type == PrimitiveType::Sphere && a.type != PrimitiveType::Torus) {
-      out[0] = frame.e1.dot(d);
-      out[1] = frame.e2.dot(d);
+      out[0] = frame.e1.dot(off);
+      out[1] = frame.e2.dot(off);
     } else {
       out[0] = d.x();
       out[1] = d.y();
