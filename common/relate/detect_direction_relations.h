@@ -4,20 +4,27 @@
 // Input:  per segment its fitted primitive (nullptr: none, free-form) and FitInformation (fit_information.h);
 //         the largest angle a direction may be off a relation (radians), and the largest share
 //         `max_cost_increase` by which a relation may raise a segment's fit cost (to first order).
-// Output: Parallel relations (a spanning tree of each class of parallel directions) and, between the classes
-//         that follow the frame, Perpendicular and 45-degree Angle relations. Every relation was tested on
-//         every segment it moves: turning a segment's direction onto the class's or frame's direction must
-//         cost less than max_cost_increase of its fit cost (plus round-off), measured with the segment's
-//         direction information, so that a strip too narrow to hold its own tilt follows the part, while a
-//         large face at a deliberate angle, which the tilt would cost far more than its roughness, does not.
-// Method: 1. Classes: pairs of directions closest to parallel first, two classes merge when every member
-//            passes the test against the merged class's direction (the mean weighted by each member's
-//            information over its allowed cost rise, by Gauss-Newton: an exact face is not turned, a rough
-//            one follows), so that errors cannot creep along a chain of nearly parallel pairs.
-//         2. Frame: the strongest class (most direction information) and the strongest one perpendicular to
-//            it within the angle span it; every class within the angle of an axis or a diagonal is assigned
-//            to it, the frame's rotation is fitted to all assigned members (Gauss-Newton on 3 angles), and
-//            classes whose members fail the test against their frame direction leave it, until none does.
+// Output: Parallel relations (from the strongest member of each class of parallel directions to the others)
+//         and, between the frame's classes, Perpendicular and 45-degree Angle relations. Every relation was
+//         tested on every segment it moves: turning a segment's direction onto the class's direction must cost
+//         less than max_cost_increase of its fit cost (plus round-off), onto the frame's less than twice that
+//         (DirectionTests), measured with the segment's direction information, so that a strip too narrow to
+//         hold its own tilt follows the part, while a large face at a deliberate angle, which the tilt would cost
+//         far more than its roughness, does not.
+// Method: 1. Classes (parallel_classes): pairs of directions closest to parallel first, two classes merge when
+//            every member passes the test against the merged class's direction (the mean weighted by each
+//            member's information over its allowed cost rise, by Gauss-Newton: an exact face is not turned, a
+//            rough one follows), so that errors cannot creep along a chain of nearly parallel pairs.
+//         2. Frame (fit_frame): the strongest class (most direction information) and the strongest one
+//            perpendicular to it within the angle span it; a class within the angle of an axis or a diagonal
+//            follows it while all its members pass the test against it; the members of the other classes are
+//            tested one by one (a class of weak directions tilted together by the roughness, e.g. a boss's short
+//            cone band and small fillets 10 degrees off on the bundled scan, holds members whose own direction is
+//            near the frame; one failing slot wall would take two large walls parallel to it out). The frame's
+//            rotation is fitted to all the members that follow it (Gauss-Newton on 3 angles), until nothing
+//            changes; every member left in the frame passes against the final one.
+//         3. The segments off the frame form classes again (step 1 among themselves); each frame direction's
+//            segments are one class.
 // Cost:   O(D^2 log D) for D directions (pairs sorted), plus O(D) per merge test and per frame round.
 #ifndef PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
 #define PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
@@ -109,6 +116,242 @@ inline std::vector<Eigen::Vector3d> frame_directions(const Eigen::Matrix3d& R)
   return out;
 }
 
+// The tests a direction must pass to follow a class's or the frame's, per segment.
+struct DirectionTests
+{
+  const std::vector<const Primitive*>* primitives;
+  const std::vector<FitInformation>* info;
+  std::vector<double> allowance;  // the cost a segment may take (mean_direction's weights)
+  std::vector<double> floor;      // round-off of exact data: a relation that holds to 1e-7 of the part always passes
+  double max_angle, max_cost_increase;
+
+  Eigen::Vector3d axis(int s) const { return (*primitives)[std::size_t(s)]->axis; }
+  // A class's direction, fitted to its members only, may cost each max_cost_increase; the frame's, fitted to
+  // all the faces that follow it, twice that, what the check after the joint refit allows a segment
+  // (relate_primitives.h): a face that a wrong segmentation tilted (a plane that took in a countersink's band)
+  // then follows the frame instead of pairing off with another tilted one.
+  bool follows(const Member& m, const Eigen::Vector3d& target) const { return within(m, target, max_cost_increase); }
+  bool follows_frame(const Member& m, const Eigen::Vector3d& target) const
+  {
+    return within(m, target, 2 * max_cost_increase);
+  }
+  bool within(const Member& m, const Eigen::Vector3d& target, double cost_increase) const
+  {
+    return passes((*info)[std::size_t(m.segment)], m.dir, target, max_angle, cost_increase,
+                  floor[std::size_t(m.segment)]);
+  }
+};
+
+struct ParallelClass
+{
+  std::vector<Member> members;
+  Eigen::Vector3d dir;
+};
+
+// Step 1: classes of parallel directions among `segments`, in the order of their first member.
+inline std::vector<ParallelClass> parallel_classes(const std::vector<int>& segments, const DirectionTests& tests)
+{
+  std::vector<int> class_of(tests.primitives->size(), -1);
+  std::vector<ParallelClass> classes;
+  std::vector<int> version;  // changes when a class changes, so that a failed pair of classes is retried then
+  for (int s : segments) {
+    class_of[std::size_t(s)] = int(classes.size());
+    classes.push_back({{{s, tests.axis(s)}}, tests.axis(s)});
+    version.push_back(0);
+  }
+  std::vector<std::tuple<double, int, int>> pairs;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    for (std::size_t j = i + 1; j < segments.size(); ++j) {
+      const double angle =
+          std::acos(std::min(1.0, std::abs(tests.axis(segments[i]).dot(tests.axis(segments[j])))));
+      if (angle <= tests.max_angle)
+        pairs.emplace_back(angle, segments[i], segments[j]);
+    }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<std::array<int, 4>> failed;  // class x, version, class y, version
+  for (const auto& [angle, a, b] : pairs) {
+    const int x = class_of[std::size_t(a)], y = class_of[std::size_t(b)];
+    if (x == y)
+      continue;
+    const std::array<int, 4> key = {std::min(x, y), version[std::size_t(std::min(x, y))], std::max(x, y),
+                                     version[std::size_t(std::max(x, y))]};
+    if (std::find(failed.begin(), failed.end(), key) != failed.end())
+      continue;
+    ParallelClass& cx = classes[std::size_t(x)];
+    ParallelClass& cy = classes[std::size_t(y)];
+    std::vector<Member> both = cx.members;
+    const double flip = cx.dir.dot(cy.dir) < 0 ? -1.0 : 1.0;
+    for (const Member& m : cy.members)
+      both.push_back({m.segment, flip * m.dir});
+    const Eigen::Vector3d d = mean_direction(both, *tests.info, tests.allowance, cx.dir);
+    if (!std::all_of(both.begin(), both.end(), [&](const Member& m) { return tests.follows(m, d); })) {
+      failed.push_back(key);
+      continue;
+    }
+    for (const Member& m : cy.members)
+      class_of[std::size_t(m.segment)] = x;
+    cx.members = both;
+    cx.dir = d;
+    cy.members.clear();
+    ++version[std::size_t(x)];
+    ++version[std::size_t(y)];
+  }
+  classes.erase(std::remove_if(classes.begin(), classes.end(),
+                               [](const ParallelClass& c) { return c.members.empty(); }),
+                classes.end());
+  return classes;
+}
+
+// The frame direction nearest d within the angle, -1: none.
+inline int nearest_frame_direction(const std::vector<Eigen::Vector3d>& frame, const Eigen::Vector3d& d,
+                                   double max_angle)
+{
+  int nearest = -1;
+  double best = max_angle;
+  for (std::size_t t = 0; t < frame.size(); ++t) {
+    const double angle = std::acos(std::min(1.0, std::abs(frame[t].dot(d))));
+    if (angle <= best) {
+      best = angle;
+      nearest = int(t);
+    }
+  }
+  return nearest;
+}
+
+// Turns the frame R to fit the directions of the segments that follow it (Gauss-Newton on a small rotation w).
+inline void fit_frame_rotation(const std::vector<ParallelClass>& classes, const std::vector<int>& target,
+                               const std::vector<FitInformation>& info, Eigen::Matrix3d& R)
+{
+  for (int it = 0; it < 4; ++it) {
+    Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
+    for (const ParallelClass& c : classes)
+      for (const Member& m : c.members) {
+        if (target[std::size_t(m.segment)] < 0)
+          continue;
+        const Eigen::Vector3d& u = dirs[std::size_t(target[std::size_t(m.segment)])];
+        const FitInformation& fi = info[std::size_t(m.segment)];
+        const Eigen::Vector3d ut = u.dot(m.dir) < 0 ? Eigen::Vector3d(-u) : u;
+        // d(ut)/dw = -[ut]x: the member's turn coordinates of a frame rotation w.
+        Eigen::Matrix<double, 2, 3> P;
+        P.row(0) = ut.cross(fi.e1).transpose();
+        P.row(1) = ut.cross(fi.e2).transpose();
+        const Eigen::Vector3d dev = ut - m.dir;
+        const Eigen::Vector2d phi(fi.e1.dot(dev), fi.e2.dot(dev));
+        A += P.transpose() * fi.direction * P;
+        b += P.transpose() * fi.direction * phi;
+      }
+    const double trace = A.trace();
+    if (!(trace > 0))
+      return;
+    A.diagonal().array() += 1e-9 * trace;  // a rotation about a single assigned axis is free: keep it still
+    const Eigen::Vector3d w = -A.ldlt().solve(b);
+    if (!w.allFinite())
+      return;
+    const double angle = w.norm();
+    if (angle > 0)
+      R = Eigen::AngleAxisd(angle, w / angle).toRotationMatrix() * R;
+  }
+}
+
+// Step 2: the frame (R) and the frame direction (frame_directions' index) each segment follows, -1: none; an
+// empty vector when the part has no frame.
+inline std::vector<int> fit_frame(const std::vector<ParallelClass>& classes, const DirectionTests& tests,
+                                  Eigen::Matrix3d& R)
+{
+  std::vector<double> strength(classes.size(), 0.0);
+  std::vector<int> order(classes.size());
+  std::iota(order.begin(), order.end(), 0);
+  for (std::size_t x = 0; x < classes.size(); ++x)
+    for (const Member& m : classes[x].members)
+      strength[x] += (*tests.info)[std::size_t(m.segment)].direction.trace();
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int x, int y) { return strength[std::size_t(x)] > strength[std::size_t(y)]; });
+  if (order.size() < 2)
+    return {};
+  const Eigen::Vector3d f1 = classes[std::size_t(order[0])].dir;
+  int second = -1;
+  for (std::size_t i = 1; i < order.size() && second < 0; ++i)
+    if (std::abs(f1.dot(classes[std::size_t(order[i])].dir)) <= std::sin(tests.max_angle))
+      second = order[i];
+  if (second < 0)
+    return {};
+  const Eigen::Vector3d& f2 = classes[std::size_t(second)].dir;
+  R.col(0) = f1;
+  R.col(1) = (f2 - f2.dot(f1) * f1).normalized();
+  R.col(2) = R.col(0).cross(R.col(1));
+
+  std::vector<int> target(tests.primitives->size(), -1), class_target(classes.size(), -1), before;
+  std::vector<char> excluded(classes.size(), 0);
+  for (int round = 0; round < 8; ++round) {
+    const std::vector<Eigen::Vector3d> fd = frame_directions(R);
+    for (std::size_t x = 0; x < classes.size(); ++x) {
+      class_target[x] = excluded[x] ? -1 : nearest_frame_direction(fd, classes[x].dir, tests.max_angle);
+      for (const Member& m : classes[x].members) {
+        int t = class_target[x];
+        if (t < 0) {
+          t = nearest_frame_direction(fd, m.dir, tests.max_angle);
+          if (t >= 0 && !tests.follows_frame(m, fd[std::size_t(t)]))
+            t = -1;
+        }
+        target[std::size_t(m.segment)] = t;
+      }
+    }
+    fit_frame_rotation(classes, target, *tests.info, R);
+    // Classes whose members cannot follow their frame direction leave it (their members are tried alone).
+    const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
+    bool changed = target != before;
+    for (std::size_t x = 0; x < classes.size(); ++x)
+      if (class_target[x] >= 0 &&
+          !std::all_of(classes[x].members.begin(), classes[x].members.end(),
+                       [&](const Member& m) { return tests.follows_frame(m, dirs[std::size_t(class_target[x])]); })) {
+        excluded[x] = 1;
+        changed = true;
+      }
+    if (!changed)
+      break;
+    before = target;
+  }
+  // Every segment left in the frame passes against the final frame.
+  const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
+  for (const ParallelClass& c : classes)
+    for (const Member& m : c.members) {
+      int& t = target[std::size_t(m.segment)];
+      if (t >= 0 && !tests.follows_frame(m, dirs[std::size_t(t)]))
+        t = -1;
+    }
+  return target;
+}
+
+// The member whose direction the points hold most firmly.
+inline int strongest_member(const std::vector<int>& segments, const std::vector<FitInformation>& info)
+{
+  int best = segments.front();
+  for (int s : segments)
+    if (info[std::size_t(s)].direction.trace() > info[std::size_t(best)].direction.trace())
+      best = s;
+  return best;
+}
+
+// Parallel relations from the strongest member of a group to each other member; returns that member.
+inline int add_parallel_relations(const std::vector<int>& group, const DirectionTests& tests,
+                                  std::vector<Relation>& out)
+{
+  const int rep = strongest_member(group, *tests.info);
+  for (int s : group) {
+    if (s == rep)
+      continue;
+    Relation r;
+    r.kind = RelationKind::Parallel;
+    r.a = rep;
+    r.b = s;
+    r.sign = tests.axis(rep).dot(tests.axis(s)) < 0 ? -1.0 : 1.0;
+    out.push_back(r);
+  }
+  return rep;
+}
+
 } // namespace direction_detail
 
 inline std::vector<Relation> detect_direction_relations(const std::vector<const Primitive*>& primitives,
@@ -121,195 +364,58 @@ inline std::vector<Relation> detect_direction_relations(const std::vector<const 
   for (std::size_t s = 0; s < primitives.size(); ++s)
     if (primitives[s] && has_direction(*primitives[s]) && info[s].weight > 0)
       directed.push_back(int(s));
-  // Round-off of exact data: a relation that holds to 1e-7 of the part's size always passes.
-  auto floor_of = [&](int s) { return 1e-14 * length * length * info[std::size_t(s)].weight; };
-  auto axis = [&](int s) { return primitives[std::size_t(s)]->axis; };
-  std::vector<double> allowance(primitives.size(), 1.0);
-  for (int s : directed)
-    allowance[std::size_t(s)] =
-        std::max(max_cost_increase * info[std::size_t(s)].cost + floor_of(s), std::numeric_limits<double>::min());
-
-  // 1. Classes of parallel directions.
-  std::vector<int> class_of(primitives.size(), -1);
-  std::vector<std::vector<Member>> members;
-  std::vector<Eigen::Vector3d> class_dir;
-  std::vector<int> version;  // changes when a class changes, so that a failed pair of classes is retried then
+  DirectionTests tests{&primitives, &info, std::vector<double>(primitives.size(), 1.0),
+                       std::vector<double>(primitives.size(), 0.0), max_angle, max_cost_increase};
   for (int s : directed) {
-    class_of[std::size_t(s)] = int(members.size());
-    members.push_back({{s, axis(s)}});
-    class_dir.push_back(axis(s));
-    version.push_back(0);
-  }
-  std::vector<std::tuple<double, int, int>> pairs;
-  for (std::size_t i = 0; i < directed.size(); ++i)
-    for (std::size_t j = i + 1; j < directed.size(); ++j) {
-      const double angle = std::acos(std::min(1.0, std::abs(axis(directed[i]).dot(axis(directed[j])))));
-      if (angle <= max_angle)
-        pairs.emplace_back(angle, directed[i], directed[j]);
-    }
-  std::sort(pairs.begin(), pairs.end());
-  std::vector<std::array<int, 4>> failed;  // class x, version, class y, version
-  for (const auto& [angle, a, b] : pairs) {
-    const int x = class_of[std::size_t(a)], y = class_of[std::size_t(b)];
-    if (x == y)
-      continue;
-    const std::array<int, 4> key = {std::min(x, y), version[std::size_t(std::min(x, y))], std::max(x, y),
-                                     version[std::size_t(std::max(x, y))]};
-    if (std::find(failed.begin(), failed.end(), key) != failed.end())
-      continue;
-    std::vector<Member> both = members[std::size_t(x)];
-    const double flip = class_dir[std::size_t(x)].dot(class_dir[std::size_t(y)]) < 0 ? -1.0 : 1.0;
-    for (const Member& m : members[std::size_t(y)])
-      both.push_back({m.segment, flip * m.dir});
-    const Eigen::Vector3d d = mean_direction(both, info, allowance, class_dir[std::size_t(x)]);
-    bool ok = true;
-    for (const Member& m : both)
-      ok = ok && passes(info[std::size_t(m.segment)], m.dir, d, max_angle, max_cost_increase, floor_of(m.segment));
-    if (!ok) {
-      failed.push_back(key);
-      continue;
-    }
-    Relation r;
-    r.kind = RelationKind::Parallel;
-    r.a = a;
-    r.b = b;
-    r.sign = axis(a).dot(axis(b)) < 0 ? -1.0 : 1.0;
-    out.push_back(r);
-    for (const Member& m : members[std::size_t(y)])
-      class_of[std::size_t(m.segment)] = x;
-    members[std::size_t(x)] = both;
-    members[std::size_t(y)].clear();
-    class_dir[std::size_t(x)] = d;
-    ++version[std::size_t(x)];
-    ++version[std::size_t(y)];
+    const std::size_t i = std::size_t(s);
+    tests.floor[i] = 1e-14 * length * length * info[i].weight;
+    tests.allowance[i] =
+        std::max(max_cost_increase * info[i].cost + tests.floor[i], std::numeric_limits<double>::min());
   }
 
-  // 2. The frame.
-  std::vector<int> classes;
-  std::vector<double> strength(members.size(), 0.0);
-  for (std::size_t x = 0; x < members.size(); ++x) {
-    if (members[x].empty())
-      continue;
-    for (const Member& m : members[x])
-      strength[x] += info[std::size_t(m.segment)].direction.trace();
-    classes.push_back(int(x));
-  }
-  std::stable_sort(classes.begin(), classes.end(),
-                   [&](int x, int y) { return strength[std::size_t(x)] > strength[std::size_t(y)]; });
-  if (classes.size() < 2)
-    return out;
-  const Eigen::Vector3d f1 = class_dir[std::size_t(classes[0])];
-  int second = -1;
-  for (std::size_t i = 1; i < classes.size() && second < 0; ++i)
-    if (std::abs(f1.dot(class_dir[std::size_t(classes[i])])) <= std::sin(max_angle))
-      second = classes[i];
-  if (second < 0)
-    return out;
-  Eigen::Matrix3d R;
-  R.col(0) = f1;
-  R.col(1) = (class_dir[std::size_t(second)] - class_dir[std::size_t(second)].dot(f1) * f1).normalized();
-  R.col(2) = R.col(0).cross(R.col(1));
+  const std::vector<ParallelClass> classes = parallel_classes(directed, tests);
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  std::vector<int> target = fit_frame(classes, tests, R);
+  target.resize(primitives.size(), -1);
 
-  std::vector<int> target(members.size(), -1);  // frame direction index of each class in the frame
-  std::vector<char> excluded(members.size(), 0);
-  for (int round = 0; round < 8; ++round) {
-    // Assign every class to the nearest frame direction within the angle.
-    const std::vector<Eigen::Vector3d> fd = frame_directions(R);
-    for (int x : classes) {
-      target[std::size_t(x)] = -1;
-      if (excluded[std::size_t(x)])
-        continue;
-      double best = max_angle;
-      for (std::size_t t = 0; t < fd.size(); ++t) {
-        const double angle = std::acos(std::min(1.0, std::abs(fd[t].dot(class_dir[std::size_t(x)]))));
-        if (angle <= best) {
-          best = angle;
-          target[std::size_t(x)] = int(t);
-        }
-      }
-    }
-    // Fit the rotation to every member of the assigned classes (Gauss-Newton on a small rotation w).
-    for (int it = 0; it < 4; ++it) {
-      Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-      Eigen::Vector3d b = Eigen::Vector3d::Zero();
-      const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
-      for (int x : classes) {
-        if (target[std::size_t(x)] < 0)
-          continue;
-        Eigen::Vector3d u = dirs[std::size_t(target[std::size_t(x)])];
-        for (const Member& m : members[std::size_t(x)]) {
-          const FitInformation& fi = info[std::size_t(m.segment)];
-          const Eigen::Vector3d ut = u.dot(m.dir) < 0 ? Eigen::Vector3d(-u) : u;
-          // d(ut)/dw = -[ut]x: the member's turn coordinates of a frame rotation w.
-          Eigen::Matrix<double, 2, 3> P;
-          P.row(0) = ut.cross(fi.e1).transpose();
-          P.row(1) = ut.cross(fi.e2).transpose();
-          const Eigen::Vector3d dev = ut - m.dir;
-          const Eigen::Vector2d phi(fi.e1.dot(dev), fi.e2.dot(dev));
-          A += P.transpose() * fi.direction * P;
-          b += P.transpose() * fi.direction * phi;
-        }
-      }
-      const double trace = A.trace();
-      if (!(trace > 0))
-        break;
-      A.diagonal().array() += 1e-9 * trace;  // a rotation about a single assigned axis is free: keep it still
-      const Eigen::Vector3d w = -A.ldlt().solve(b);
-      if (!w.allFinite())
-        break;
-      const double angle = w.norm();
-      if (angle > 0)
-        R = Eigen::AngleAxisd(angle, w / angle).toRotationMatrix() * R;
-    }
-    // Classes whose members cannot follow their frame direction leave the frame.
-    const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
-    bool changed = false;
-    for (int x : classes) {
-      if (target[std::size_t(x)] < 0)
-        continue;
-      bool ok = true;
-      for (const Member& m : members[std::size_t(x)])
-        ok = ok && passes(info[std::size_t(m.segment)], m.dir, dirs[std::size_t(target[std::size_t(x)])], max_angle,
-                          max_cost_increase, floor_of(m.segment));
-      if (!ok) {
-        excluded[std::size_t(x)] = 1;
-        changed = true;
-      }
-    }
-    if (!changed)
-      break;
+  // The segments off the frame form their own classes; each frame direction's segments are one class.
+  std::vector<int> off_frame;
+  for (int s : directed)
+    if (target[std::size_t(s)] < 0)
+      off_frame.push_back(s);
+  for (const ParallelClass& c : parallel_classes(off_frame, tests)) {
+    std::vector<int> group;
+    for (const Member& m : c.members)
+      group.push_back(m.segment);
+    add_parallel_relations(group, tests, out);
   }
-
-  // Relations between the representatives (strongest members) of the classes in the frame.
   const std::vector<Eigen::Vector3d> dirs = frame_directions(R);
-  std::vector<int> in_frame;
-  for (int x : classes)
-    if (target[std::size_t(x)] >= 0 && !excluded[std::size_t(x)])
-      in_frame.push_back(x);
-  auto representative = [&](int x) {
-    int best = members[std::size_t(x)].front().segment;
-    for (const Member& m : members[std::size_t(x)])
-      if (info[std::size_t(m.segment)].direction.trace() > info[std::size_t(best)].direction.trace())
-        best = m.segment;
-    return best;
-  };
-  for (std::size_t i = 0; i < in_frame.size(); ++i)
-    for (std::size_t j = i + 1; j < in_frame.size(); ++j) {
-      const Eigen::Vector3d& u = dirs[std::size_t(target[std::size_t(in_frame[i])])];
-      const Eigen::Vector3d& v = dirs[std::size_t(target[std::size_t(in_frame[j])])];
-      const double c = u.dot(v);
+  std::vector<int> frame_target, representative;
+  for (int t = 0; t < int(dirs.size()); ++t) {
+    std::vector<int> group;
+    for (int s : directed)
+      if (target[std::size_t(s)] == t)
+        group.push_back(s);
+    if (group.empty())
+      continue;
+    frame_target.push_back(t);
+    representative.push_back(add_parallel_relations(group, tests, out));
+  }
+  for (std::size_t i = 0; i < frame_target.size(); ++i)
+    for (std::size_t j = i + 1; j < frame_target.size(); ++j) {
+      const double c = dirs[std::size_t(frame_target[i])].dot(dirs[std::size_t(frame_target[j])]);
       Relation r;
-      r.a = representative(in_frame[i]);
-      r.b = representative(in_frame[j]);
+      r.a = representative[i];
+      r.b = representative[j];
       if (std::abs(c) < 1e-9) {
         r.kind = RelationKind::Perpendicular;
       } else if (std::abs(std::abs(c) - std::sqrt(0.5)) < 1e-9) {
         r.kind = RelationKind::Angle;
         r.angle_deg = 45;
         // Orient b so that its direction makes 45 (not 135) degrees with a's.
-        r.sign = axis(r.a).dot(axis(r.b)) < 0 ? -1.0 : 1.0;
+        r.sign = tests.axis(r.a).dot(tests.axis(r.b)) < 0 ? -1.0 : 1.0;
       } else {
-        continue;  // the same frame direction twice: both classes follow it, no relation between them needed
+        continue;  // two diagonals 60 degrees apart: each is held by its angles to the axes
       }
       out.push_back(r);
     }
