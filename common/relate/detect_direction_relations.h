@@ -64,14 +64,6 @@ inline double turn_cost(const FitInformation& info, const Eigen::Vector3d& dir, 
   return phi.dot(info.direction * phi);
 }
 
-inline bool passes(const FitInformation& info, const Eigen::Vector3d& dir, const Eigen::Vector3d& target,
-                   double max_angle, double max_cost_increase, double floor)
-{
-  double angle = 0;
-  const double cost = turn_cost(info, dir, target, &angle);
-  return angle <= max_angle && cost <= max_cost_increase * info.cost + floor;
-}
-
 // The direction that turns the members least, each in its information metric divided by the cost it may
 // take (`allowance`, per segment), so that a member fitted exactly is not turned and a rough one follows
 // (Gauss-Newton from `start`).
@@ -137,8 +129,10 @@ struct DirectionTests
   }
   bool within(const Member& m, const Eigen::Vector3d& target, double cost_increase) const
   {
-    return passes((*info)[std::size_t(m.segment)], m.dir, target, max_angle, cost_increase,
-                  floor[std::size_t(m.segment)]);
+    const FitInformation& fi = (*info)[std::size_t(m.segment)];
+    double angle = 0;
+    const double cost = turn_cost(fi, m.dir, target, &angle);
+    return angle <= max_angle && cost <= cost_increase * fi.cost + floor[std::size_t(m.segment)];
   }
 };
 

@@ -47,8 +47,7 @@ inline double axis_angle(const Primitive& a, const Primitive& b)
 // Distance of x from the axis line of p.
 inline double distance_to_axis(const Primitive& p, const Eigen::Vector3d& x)
 {
-  const Eigen::Vector3d v = x - p.origin;
-  return (v - v.dot(p.axis) * p.axis).norm();
+  return off_axis(p, x - p.origin).norm();
 }
 
 // The point of p's axis at which its offset from other's axis is measured: p's origin (a cylinder's is the axis

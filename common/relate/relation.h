@@ -117,6 +117,9 @@ inline RelationFrame relation_frame(const Primitive& a)
   return f;
 }
 
+// The part of d (from a's origin) off a's axis.
+inline Eigen::Vector3d off_axis(const Primitive& a, const Eigen::Vector3d& d) { return d - d.dot(a.axis) * a.axis; }
+
 // The point of a fillet's spine (a cylinder's axis, a torus's tube centre circle) nearest to x.
 inline Eigen::Vector3d fillet_spine_point(const Primitive& f, const Eigen::Vector3d& x)
 {
@@ -137,7 +140,7 @@ inline void relation_residual(const Relation& r, const Primitive& a, const Primi
   const Eigen::Vector3d d = b.origin - a.origin;
   // b's origin off a's axis, measured from the axis a has now (not through the step's fixed frame, which
   // would turn a long d along the axis into an offset: a cone's apex lies far along it).
-  const Eigen::Vector3d off = d - d.dot(da) * da;
+  const Eigen::Vector3d off = off_axis(a, d);
   auto parallel = [&](double* o) {
     o[0] = length * frame.e1.dot(db - da);
     o[1] = length * frame.e2.dot(db - da);
@@ -190,16 +193,12 @@ inline double relation_value(const Relation& r, const Primitive& a, const Primit
   case RelationKind::Angle: return r.angle_deg;
   case RelationKind::EqualRadius:
   case RelationKind::Tangent: return relation_radius(a);
-  case RelationKind::Coaxial: {
-    const Eigen::Vector3d d = b.origin - a.origin;
-    return (d - d.dot(a.axis) * a.axis).norm();
-  }
+  case RelationKind::Coaxial: return off_axis(a, b.origin - a.origin).norm();
   case RelationKind::Coplanar: return std::abs(a.axis.dot(b.origin - a.origin));
   case RelationKind::Concentric: {
     const Eigen::Vector3d d = b.origin - a.origin;
-    return (has_axis(a) && b.type == PrimitiveType::Sphere && a.type != PrimitiveType::Torus)
-               ? (d - d.dot(a.axis) * a.axis).norm()
-               : d.norm();
+    return (has_axis(a) && b.type == PrimitiveType::Sphere && a.type != PrimitiveType::Torus) ? off_axis(a, d).norm()
+                                                                                               : d.norm();
   }
   }
   return 0.0;
