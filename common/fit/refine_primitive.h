@@ -8,8 +8,9 @@
 //         reweighted with Tukey's biweight (c = 4.685 * 1.4826 * median |d|, first rounds wider) so
 //         that outliers (e.g. points of a neighbouring surface at the segment border) get weight 0.
 //         rms / max_residual / point_count are over the points of final weight > 0, in the output
-//         conventions of canonicalize_primitive.h. A failed status if the start is invalid or the
-//         refinement could not keep a valid primitive.
+//         conventions of canonicalize_primitive.h. A failed status if the start is invalid, the points or
+//         weights are not usable (check_fit_input.h: non-finite, negative weights, no point of positive
+//         weight) or the refinement could not keep a valid primitive.
 // Method: the parameters are local to the current primitive and re-based after every accepted step:
 //         axis a -> normalize(a + t1 e1 + t2 e2) with e1, e2 orthogonal to a, so no parametrisation
 //         singularity. Unknowns: plane (offset, t1, t2), sphere (centre, r), cylinder (2 shifts of the
@@ -22,6 +23,7 @@
 #define PRIMITIVE_EDIT_REFINE_PRIMITIVE_H
 
 #include "common/base/canonicalize_primitive.h"
+#include "common/fit/check_fit_input.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/fit/fit_residuals.h"
 #include "common/fit/fit_result.h"
@@ -297,6 +299,9 @@ inline FitResult refine_primitive(const Primitive& start, const Eigen::MatrixX3d
     failed.status = Status::failure("invalid start primitive");
     return failed;
   }
+  failed.status = check_fit_input(points, {}, weights, 1);
+  if (!failed.status)
+    return failed;
   const Eigen::VectorXd w = weights.size() ? weights : Eigen::VectorXd::Ones(points.rows());
   double extent = 0;
   if (points.rows())

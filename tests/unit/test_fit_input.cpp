@@ -3,6 +3,7 @@
 // centroid, cone axis into the opening, weights honoured).
 #include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
+#include "common/fit/refine_primitive.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +67,24 @@ TEST(FitInput, NonFiniteValuesRejected)
     w[5] = std::numeric_limits<double>::quiet_NaN();
     EXPECT_FALSE(fit_primitive(t, cylinder_sample(100).points, Eigen::MatrixX3d(), w).status.ok());
   }
+}
+
+// Found by fuzz/fuzz_fit.cpp: the refinement alone (the edit tool's and the fits' last step) took NaN points and
+// reported success with a NaN residual.
+TEST(FitInput, RefinementRejectsNonFinitePointsAndWeights)
+{
+  const Sample s = cylinder_sample(100);
+  const FitResult fit = fit_primitive(PrimitiveType::Cylinder, s.points, s.normals, Eigen::VectorXd());
+  ASSERT_TRUE(fit.status.ok());
+  EXPECT_TRUE(refine_primitive(fit.primitive, s.points, Eigen::VectorXd()).status.ok());
+  Eigen::MatrixX3d points = s.points;
+  points(17, 1) = std::numeric_limits<double>::quiet_NaN();
+  FitResult r = refine_primitive(fit.primitive, points, Eigen::VectorXd());
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_NE(r.status.error.find("non-finite"), std::string::npos) << r.status.error;
+  Eigen::VectorXd w = Eigen::VectorXd::Ones(100);
+  w[5] = -1;
+  EXPECT_FALSE(refine_primitive(fit.primitive, s.points, w).status.ok());
 }
 
 TEST(FitInput, MismatchedSizesAndNegativeWeightsRejected)
