@@ -144,8 +144,8 @@ inline std::vector<Relation> detect_position_relations(const std::vector<const P
     }
   }
   for (const SegmentContact& contact : contacts) {
-    if (contact.a >= count || contact.b >= count || !primitives[std::size_t(contact.a)] ||
-        !primitives[std::size_t(contact.b)])
+    if (contact.a < 0 || contact.b < 0 || contact.a == contact.b || contact.a >= count || contact.b >= count ||
+        !primitives[std::size_t(contact.a)] || !primitives[std::size_t(contact.b)])
       continue;
     for (const auto& [f, g] : {std::pair<int, int>{contact.a, contact.b}, std::pair<int, int>{contact.b, contact.a}}) {
       const Primitive& pf = prim(f);

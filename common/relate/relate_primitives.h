@@ -3,7 +3,8 @@
 //
 // Input:  per segment its fitted primitive (std::nullopt: free-form, left out) and its samples
 //         (gather_segment_samples.h: points and weights), the segments' contacts (segment_contacts.h), the
-//         scan's noise (RMS, 0 if unknown), which segments are held fixed (empty: none), and RelationOptions.
+//         scan's noise (RMS; 0 or not finite: unknown), which segments are held fixed (empty: none), and
+//         RelationOptions.
 // Output: RelatedPrimitives: the relations kept, each segment's primitive after the joint refit (the input
 //         where the segment is in no relation), the relations the check after the refit dropped, and a
 //         status (failed only for bad options). Nothing is invented: a relation is kept only when making it
@@ -168,7 +169,8 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
       const double rms = fit_residuals(r.primitive, r.points, r.weights).rms;
       r.weights /= rms * rms + 1e-14 * length * length;
     }
-  out.distance = options.distance > 0 ? options.distance : noise > 0 ? 3.0 * noise : 0.01 * length;
+  const bool noise_known = noise > 0 && std::isfinite(noise);
+  out.distance = options.distance > 0 ? options.distance : noise_known ? 3.0 * noise : 0.01 * length;
   const double angle = radians_from_degrees(options.angle_deg);
 
   auto information = [&](const std::vector<const Primitive*>& p) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <iterator>
 #include <random>
 #include <set>
@@ -342,6 +343,28 @@ TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
   const RelatedPrimitives none = relate_primitives({}, {}, {}, 0.0, RelationOptions());
   EXPECT_TRUE(none.status.ok());
   EXPECT_TRUE(none.relations.empty());
+}
+
+// Found by fuzz/fuzz_relate.cpp: a contact naming no segment or one segment twice indexed out of bounds or
+// related a fillet to itself; a non-finite noise made every distance tolerance infinite.
+TEST(Relations, IgnoresBrokenContactsAndUnknownNoise)
+{
+  const Scene scene = make_part(0.05);
+  const std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  std::vector<SegmentContact> contacts = scene.contacts;
+  contacts.push_back({-1, Fillet, 10, Eigen::Vector3d(30, 1.5, 5)});
+  contacts.push_back({Fillet, Fillet, 10, Eigen::Vector3d(30, 1.5, 5)});
+  const RelatedPrimitives r = relate_primitives(fitted, samples_of(scene), contacts, 0.05, RelationOptions());
+  ASSERT_TRUE(r.status.ok());
+  for (const Relation& q : r.relations)
+    EXPECT_TRUE(q.a != q.b && q.a >= 0 && q.b >= 0) << describe(r.relations);
+  EXPECT_TRUE(has_relation(r.relations, RelationKind::Tangent, Fillet, Top)) << describe(r.relations);
+
+  for (double noise : {std::numeric_limits<double>::infinity(), std::nan("")}) {
+    const RelatedPrimitives unknown = relate_primitives(fitted, samples_of(scene), scene.contacts, noise, RelationOptions());
+    ASSERT_TRUE(unknown.status.ok());
+    EXPECT_TRUE(std::isfinite(unknown.distance) && unknown.distance > 0) << unknown.distance;
+  }
 }
 
 } // namespace
