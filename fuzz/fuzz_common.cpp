@@ -40,6 +40,8 @@
 #include "common/pipeline/write_fits_json.h"
 #include "common/snap/snap_segments.h"
 #include "common/segment/split_segments_by_plane.h"
+#include "fuzz/fuzz_input.h"
+#include "fuzz/snap_checked.h"
 
 #include <common/ml_mesh_type.h>
 #include <vcg/complex/complex.h>
@@ -58,132 +60,12 @@
 #include <type_traits>
 #include <vector>
 
-namespace fuzz_mesh {
-
-class FVertex;
-class FFace;
-struct FUsedTypes : public vcg::UsedTypes<vcg::Use<FVertex>::AsVertexType, vcg::Use<FFace>::AsFaceType> {};
-class FVertex : public vcg::Vertex<FUsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::BitFlags> {};
-class FFace : public vcg::Face<FUsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::BitFlags> {};
-class FMesh : public vcg::tri::TriMesh<std::vector<FVertex>, std::vector<FFace>> {};
-
-} // namespace fuzz_mesh
-
 using namespace primitive_edit;
+using namespace fuzz;
 
 namespace {
 
-constexpr int kMaxVertices = 1200;
-constexpr int kMaxFaces = 2000;
 constexpr int kMaxFittedSegments = 4;
-
-[[noreturn]] void fail(const char* what, const char* file, int line)
-{
-  std::fprintf(stderr, "INVARIANT VIOLATED at %s:%d: %s\n", file, line, what);
-  std::abort();
-}
-#define FUZZ_CHECK(cond)                                                                                              \
-  do {                                                                                                                \
-    if (!(cond))                                                                                                      \
-      fail(#cond, __FILE__, __LINE__);                                                                                \
-  } while (0)
-
-// Reads the input front to back; past the end every read gives 0, so any prefix is a valid input.
-class Decoder
-{
-public:
-  Decoder(const uint8_t* data, size_t size) : data_(data), size_(size) {}
-  uint8_t u8() { return pos_ < size_ ? data_[pos_++] : 0; }
-  uint16_t u16() { return uint16_t(u8() | (uint16_t(u8()) << 8)); }
-  uint32_t u32() { return uint32_t(u16()) | (uint32_t(u16()) << 16); }
-  bool bit() { return (u8() & 1) != 0; }
-  double unit() { return u16() / 65535.0; }               // [0, 1]
-  double signed_unit() { return 2.0 * unit() - 1.0; }    // [-1, 1]
-  // A number that is usually ordinary but sometimes one of the patterns that break geometry code.
-  double special(double scale)
-  {
-    const uint8_t kind = u8();
-    switch (kind % 24) {
-    case 0: return std::numeric_limits<double>::quiet_NaN();
-    case 1: return std::numeric_limits<double>::infinity();
-    case 2: return -std::numeric_limits<double>::infinity();
-    case 3: return 1e6 * signed_unit();
-    case 4: return 1e-40 * signed_unit();   // a float denormal
-    case 5: return 0.0;
-    case 6: {
-      const uint32_t bits = u32();
-      float f;
-      std::memcpy(&f, &bits, sizeof f);
-      return double(f);
-    }
-    case 7: return 1e30 * signed_unit();
-    default: return scale * signed_unit();
-    }
-  }
-  size_t remaining() const { return pos_ < size_ ? size_ - pos_ : 0; }
-
-private:
-  const uint8_t* data_;
-  size_t size_;
-  size_t pos_ = 0;
-};
-
-Eigen::Vector3d unit_vector(Decoder& in)
-{
-  Eigen::Vector3d d(in.signed_unit(), in.signed_unit(), in.signed_unit());
-  if (d.norm() < 1e-3)
-    d = Eigen::Vector3d::UnitZ();
-  return d.normalized();
-}
-
-// A primitive with fuzzed parameters: mostly valid, sometimes invalid (zero axis, negative radius, NaN).
-Primitive fuzz_primitive(Decoder& in)
-{
-  Primitive p;
-  p.type = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
-  const bool wild = (in.u8() % 4) == 0;
-  if (wild) {
-    p.origin = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
-    p.axis = Eigen::Vector3d(in.special(1), in.special(1), in.special(1));
-    p.radius = in.special(2);
-    p.minor_radius = in.special(1);
-    p.half_angle = in.special(2);
-  } else {
-    p.origin = Eigen::Vector3d(in.signed_unit(), in.signed_unit(), in.signed_unit()) * 2.0;
-    p.axis = unit_vector(in);
-    p.radius = 0.05 + 3.0 * in.unit();
-    p.minor_radius = 0.02 + p.radius * 1.2 * in.unit();
-    p.half_angle = 0.001 + 1.5687 * in.unit();
-  }
-  return p;
-}
-
-// A point of the given shape at surface parameters (u, v) in [0, 1]^2 (shape 0: raw fuzzed coordinates).
-Eigen::Vector3d shape_point(int shape, double u, double v, const Primitive& p)
-{
-  const double pi = kPi;
-  const Eigen::Vector3d a = p.axis;
-  const Eigen::Vector3d e1 = any_orthogonal(a);
-  const Eigen::Vector3d e2 = a.cross(e1);
-  const double t = 2 * pi * u;
-  switch (shape) {
-  case 1: return p.origin + 3 * (u - 0.5) * e1 + 3 * (v - 0.5) * e2;
-  case 2: {
-    const double phi = pi * (0.05 + 0.9 * v);
-    return p.origin + p.radius * (std::sin(phi) * (std::cos(t) * e1 + std::sin(t) * e2) + std::cos(phi) * a);
-  }
-  case 3: return p.origin + p.radius * (std::cos(t) * e1 + std::sin(t) * e2) + 2 * (v - 0.5) * a;
-  case 4: {
-    const double h = 0.1 + 2 * v;
-    return p.origin + h * a + h * std::tan(p.half_angle) * (std::cos(t) * e1 + std::sin(t) * e2);
-  }
-  default: {
-    const double s = 2 * pi * v;
-    const Eigen::Vector3d radial = std::cos(t) * e1 + std::sin(t) * e2;
-    return p.origin + (p.radius + p.minor_radius * std::cos(s)) * radial + p.minor_radius * std::sin(s) * a;
-  }
-  }
-}
 
 struct Params
 {
@@ -219,148 +101,6 @@ Params decode_params(Decoder& in)
   return p;
 }
 
-template <class MeshType>
-void build_mesh(Decoder& in, MeshType& m)
-{
-  using Scalar = typename MeshType::ScalarType;
-  const int shape = in.u8() % 6;
-  const Primitive shape_prim = fuzz_primitive(in);
-  Primitive clean = shape_prim;
-  if (!primitive_is_valid(clean)) {
-    clean.origin.setZero();
-    clean.axis = Eigen::Vector3d::UnitZ();
-    clean.radius = 1;
-    clean.minor_radius = 0.4;
-    clean.half_angle = 0.5;
-  }
-  const double scale = std::pow(10.0, int(in.u8() % 13) - 6);  // 1e-6 .. 1e6
-  const double noise = in.unit() * in.unit() * 0.05;
-  const int rows = 2 + in.u8() % 30;
-  const int cols = 2 + in.u8() % 30;
-  const double u_span = 0.02 + in.unit();  // a short arc of a cylinder, a cap of a sphere...
-  const double v_span = 0.02 + in.unit();
-
-  int nv = shape == 0 ? int(in.u16() % (kMaxVertices + 1)) : std::min(rows * cols, kMaxVertices);
-  vcg::tri::Allocator<MeshType>::AddVertices(m, size_t(nv));
-  for (int i = 0; i < nv; ++i) {
-    Eigen::Vector3d p;
-    if (shape == 0) {
-      p = Eigen::Vector3d(in.special(1), in.special(1), in.special(1));
-    } else {
-      const int r = i / cols, c = i % cols;
-      p = shape_point(shape, u_span * c / (cols - 1), v_span * r / std::max(rows - 1, 1), clean);
-    }
-    m.vert[size_t(i)].P() = typename MeshType::CoordType(Scalar(p.x() * scale), Scalar(p.y() * scale),
-                                                         Scalar(p.z() * scale));
-  }
-  // Perturbations: noise, special values, duplicates of other vertices.
-  const int perturbations = in.u8() % 32;
-  for (int k = 0; k < perturbations && nv > 0; ++k) {
-    const int i = in.u16() % nv;
-    auto& P = m.vert[size_t(i)].P();
-    switch (in.u8() % 4) {
-    case 0: P[in.u8() % 3] = Scalar(in.special(1) * scale); break;
-    case 1: P = m.vert[size_t(in.u16() % nv)].P(); break;
-    default:
-      for (int a = 0; a < 3; ++a)
-        P[a] += Scalar(noise * scale * in.signed_unit());
-    }
-  }
-
-  std::vector<std::array<int, 3>> faces;
-  if (shape != 0 && nv == rows * cols) {
-    const bool flip_some = in.bit();
-    for (int r = 0; r + 1 < rows; ++r)
-      for (int c = 0; c + 1 < cols; ++c) {
-        const int a = r * cols + c, b = a + 1, d = a + cols, e = d + 1;
-        std::array<int, 3> f1{a, b, e}, f2{a, e, d};
-        if (flip_some && ((r * 7 + c) % 5 == 0))
-          std::swap(f1[1], f1[2]);  // inconsistent orientation
-        faces.push_back(f1);
-        faces.push_back(f2);
-      }
-  }
-  const int extra = nv > 0 ? int(in.u16() % (kMaxFaces + 1)) : 0;
-  for (int k = 0; k < extra && int(faces.size()) < kMaxFaces && in.remaining() > 0; ++k)
-    faces.push_back({int(in.u16() % nv), int(in.u16() % nv), int(in.u16() % nv)});
-  if (int(faces.size()) > kMaxFaces)
-    faces.resize(size_t(kMaxFaces));
-
-  vcg::tri::Allocator<MeshType>::AddFaces(m, faces.size());
-  for (size_t f = 0; f < faces.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      m.face[f].V(k) = &m.vert[size_t(faces[f][size_t(k)])];
-  // Deleted faces: vcg keeps them in the vector, flagged.
-  const int deletions = in.u8() % 8;
-  for (int k = 0; k < deletions && !faces.empty(); ++k) {
-    auto& f = m.face[in.u16() % faces.size()];
-    if (!f.IsD())
-      vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
-  }
-}
-
-// Dense ids 0..K-1, each used, -1 exactly on deleted faces.
-template <class MeshType>
-void check_segmentation(const MeshType& m, const std::vector<int>& seg, int K)
-{
-  FUZZ_CHECK(seg.size() == m.face.size());
-  FUZZ_CHECK(K >= 0);
-  std::vector<char> used(size_t(K), 0);
-  for (size_t f = 0; f < seg.size(); ++f) {
-    if (m.face[f].IsD()) {
-      FUZZ_CHECK(seg[f] == -1);
-      continue;
-    }
-    FUZZ_CHECK(seg[f] >= 0 && seg[f] < K);
-    used[size_t(seg[f])] = 1;
-  }
-  FUZZ_CHECK(std::all_of(used.begin(), used.end(), [](char u) { return u != 0; }));
-}
-
-void check_dense(const std::vector<int>& seg, int K)
-{
-  std::vector<char> used(size_t(std::max(K, 0)), 0);
-  for (int s : seg) {
-    FUZZ_CHECK(s >= -1 && s < K);
-    if (s >= 0)
-      used[size_t(s)] = 1;
-  }
-  FUZZ_CHECK(std::all_of(used.begin(), used.end(), [](char u) { return u != 0; }));
-}
-
-void check_fit(const FitResult& r)
-{
-  if (!r.status.ok())
-    return;
-  FUZZ_CHECK(primitive_is_valid(r.primitive));
-  FUZZ_CHECK(std::isfinite(r.rms) && r.rms >= 0);
-  FUZZ_CHECK(std::isfinite(r.max_residual) && r.max_residual >= 0);
-}
-
-template <class MeshType>
-void check_adjacency(const MeshType& m, const FaceAdjacency& adj)
-{
-  FUZZ_CHECK(adj.face_count() == int(m.face.size()));
-  FUZZ_CHECK(adj.offset.empty() || adj.offset.front() == 0);
-  std::vector<std::pair<int, int>> pairs;
-  for (int f = 0; f < adj.face_count(); ++f) {
-    FUZZ_CHECK(adj.offset[size_t(f)] <= adj.offset[size_t(f) + 1]);
-    for (int k = adj.offset[size_t(f)]; k < adj.offset[size_t(f) + 1]; ++k) {
-      const int g = adj.neighbour[size_t(k)];
-      FUZZ_CHECK(g >= 0 && g < adj.face_count() && g != f);
-      FUZZ_CHECK(!m.face[size_t(f)].IsD() && !m.face[size_t(g)].IsD());
-      pairs.emplace_back(f, g);
-    }
-  }
-  FUZZ_CHECK(adj.offset.empty() || adj.offset.back() == int(adj.neighbour.size()));
-  // Symmetric: g lists f whenever f lists g.
-  std::vector<std::pair<int, int>> reversed;
-  for (const auto& p : pairs)
-    reversed.emplace_back(p.second, p.first);
-  std::sort(pairs.begin(), pairs.end());
-  std::sort(reversed.begin(), reversed.end());
-  FUZZ_CHECK(pairs == reversed);
-}
 
 template <class MeshType>
 void run(Decoder& in)
@@ -373,13 +113,7 @@ void run(Decoder& in)
       m.face.EnableColor();
     }
   }
-  // vcg's ~TriMesh does not free per-face attributes (ClearAttributes is commented out there): free them here
-  // so that LeakSanitizer reports our leaks only.
-  struct AttributeCleaner
-  {
-    MeshType& mesh;
-    ~AttributeCleaner() { mesh.ClearAttributes(); }
-  } cleaner{m};
+  const AttributeCleaner<MeshType> cleaner{m};
   build_mesh(in, m);
   const Params params = decode_params(in);
 
@@ -638,41 +372,7 @@ void run(Decoder& in)
     effective[size_t(target)] = target_primitive;
     prim_of_segment = effective;
   }
-  {
-    std::vector<typename MeshType::CoordType> before(m.vert.size());
-    for (size_t v = 0; v < m.vert.size(); ++v)
-      before[v] = m.vert[v].cP();
-    std::vector<char> on_snapped(m.vert.size(), 0);
-    for (size_t f = 0; f < m.face.size(); ++f) {
-      if (m.face[f].IsD() || seg[f] < 0)
-        continue;
-      const auto& pr = prim_of_segment[size_t(seg[f])];
-      if (pr && primitive_is_valid(*pr))
-        for (int k = 0; k < 3; ++k)
-          on_snapped[vcg::tri::Index(m, m.face[f].cV(k))] = 1;
-    }
-    const SnapReport report = target >= 0
-                                  ? snap_onto_primitive(m, seg, {target}, target_primitive, params.snap, K)
-                                  : snap_segments(m, seg, prim_of_segment, params.snap);
-    if (target >= 0 && primitive_is_valid(target_primitive))
-      FUZZ_CHECK(read_segment_primitives(m, K)[size_t(target)].has_value());
-    FUZZ_CHECK(std::isfinite(report.mean_displacement) && std::isfinite(report.max_displacement));
-    for (size_t v = 0; v < m.vert.size(); ++v) {
-      const auto& p = m.vert[v].cP();
-      const bool was_finite =
-          std::isfinite(double(before[v][0])) && std::isfinite(double(before[v][1])) && std::isfinite(double(before[v][2]));
-      if (was_finite)
-        FUZZ_CHECK(std::isfinite(double(p[0])) && std::isfinite(double(p[1])) && std::isfinite(double(p[2])));
-      else
-        FUZZ_CHECK(std::memcmp(&p, &before[v], sizeof p) == 0);
-      if (!on_snapped[v] && report.repaired_vertices == 0)
-        FUZZ_CHECK(std::memcmp(&p, &before[v], sizeof p) == 0);
-    }
-    if (params.snap.prevent_flips)
-      FUZZ_CHECK(report.folded_faces == 0);
-    else
-      FUZZ_CHECK(report.repaired_vertices == 0 && report.reverted_vertices == 0);
-  }
+  snap_checked(m, seg, prim_of_segment, target, target_primitive, params.snap, K);
 
   // Accuracy: sample the mesh, measure against itself and against fuzzed points.
   {

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the seed corpus of fuzz_common into fuzz/corpus/ (deterministic: same files on every run).
 
-Each seed follows the byte layout decoded by fuzz_common.cpp (LLVMFuzzerTestOneInput, build_mesh,
-fuzz_primitive, decode_params): mesh kind, shape and its primitive, scale, grid size, then a pseudo-random
+Each seed follows the byte layout decoded by fuzz_common.cpp (LLVMFuzzerTestOneInput, decode_params) and
+fuzz_input.h (build_mesh, fuzz_primitive): mesh kind, shape and its primitive, scale, grid size, then a pseudo-random
 tail for perturbations, extra faces, parameters, selection and overrides. Seeds cover both mesh types, every
 shape (raw cloud, plane, sphere, cylinder, cone, torus), tiny and huge scales and narrow arcs; the fuzzer
 mutates from there.

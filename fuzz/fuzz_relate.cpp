@@ -1,0 +1,164 @@
+// fuzz_relate.cpp: libFuzzer target over the relations and the joint refit (common/relate/) on small parts.
+//
+// The bytes are decoded (fuzz_input.h) into a part of up to 6 segments whose primitives share structure as a
+// machined part's do (axes along a frame or at 45 degrees to it, origins on a coarse grid, radii from a few
+// values), so that relations are found and the refit runs; each segment gets up to 120 points of a patch of
+// its primitive with noise and special values, and a "fitted" primitive: its own, slightly tilted and moved, or
+// a decoded one (valid or not), or none. Contacts between segments, the noise, the options and the fixed
+// segments are decoded too. Entry point: relate_primitives (direction and position detection, the refits, the
+// check). Invariants: bad options are refused with the primitives untouched; otherwise every relation joins
+// two distinct segments that had a valid primitive, a segment without one stays without, every relation kept
+// holds after the refit, the refitted primitives are valid, and held segments do not move.
+#include "common/relate/relate_primitives.h"
+#include "fuzz/fuzz_input.h"
+
+#include <cstdint>
+#include <cstring>
+#include <optional>
+
+using namespace primitive_edit;
+using namespace fuzz;
+
+namespace {
+
+constexpr int kMaxSegments = 6;
+constexpr int kMaxPoints = 120;
+
+Eigen::Vector3d frame_direction(Decoder& in)
+{
+  const double h = std::sqrt(0.5);
+  switch (in.u8() % 8) {
+  case 0: return Eigen::Vector3d::UnitX();
+  case 1: return Eigen::Vector3d::UnitY();
+  case 2: return Eigen::Vector3d::UnitZ();
+  case 3: return Eigen::Vector3d(h, h, 0);
+  case 4: return Eigen::Vector3d(0, -h, h);
+  case 5: return -Eigen::Vector3d::UnitZ();
+  default: return unit_vector(in);
+  }
+}
+
+Primitive part_primitive(Decoder& in)
+{
+  static constexpr double kRadii[] = {0.5, 1.0, 1.5, 2.5, 4.0};
+  Primitive p;
+  p.type = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+  p.axis = frame_direction(in);
+  p.origin = Eigen::Vector3d(int(in.u8() % 5) - 2, int(in.u8() % 5) - 2, int(in.u8() % 5) - 2);
+  p.radius = kRadii[in.u8() % 5];
+  p.minor_radius = std::min(kRadii[in.u8() % 5], 0.8 * p.radius);
+  p.half_angle = in.bit() ? 0.7853981634 : 0.05 + 1.4 * in.unit();
+  if (p.type == PrimitiveType::Torus && p.minor_radius >= p.radius)
+    p.minor_radius = 0.5 * p.radius;
+  return p;
+}
+
+// The segment's primitive moved as a per-segment fit of a rough scan moves it: a small tilt and shift.
+Primitive perturbed(Decoder& in, Primitive p)
+{
+  const double tilt = 0.2 * in.unit() * in.unit();
+  p.axis = (p.axis + tilt * unit_vector(in)).normalized();
+  p.origin += 0.1 * in.unit() * unit_vector(in);
+  p.radius *= 1 + 0.05 * in.signed_unit();
+  p.minor_radius *= 1 + 0.05 * in.signed_unit();
+  return p;
+}
+
+// Bit for bit (a NaN parameter of an invalid primitive equals itself).
+bool same(const Primitive& a, const Primitive& b)
+{
+  auto bits = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  for (int k = 0; k < 3; ++k)
+    if (!bits(a.origin[k], b.origin[k]) || !bits(a.axis[k], b.axis[k]))
+      return false;
+  return a.type == b.type && bits(a.radius, b.radius) && bits(a.minor_radius, b.minor_radius) &&
+         bits(a.half_angle, b.half_angle);
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+  Decoder in(data, size);
+  const int count = 1 + in.u8() % kMaxSegments;
+  std::vector<std::optional<Primitive>> fitted(static_cast<std::size_t>(count));
+  std::vector<SegmentSamples> samples(static_cast<std::size_t>(count));
+  for (int s = 0; s < count; ++s) {
+    const Primitive truth = part_primitive(in);
+    SegmentSamples& ss = samples[std::size_t(s)];
+    ss.points = points_on(in, int(truth.type) + 1, truth, kMaxPoints);
+    ss.normals = Eigen::MatrixX3d::Zero(ss.points.rows(), 3);
+    ss.weights = decode_weights(in, ss.points.rows());
+    if (ss.weights.size() != ss.points.rows())
+      ss.weights = Eigen::VectorXd::Ones(ss.points.rows());
+    switch (in.u8() % 8) {
+    case 0: break;  // free-form: no primitive
+    case 1: fitted[std::size_t(s)] = fuzz_primitive(in); break;
+    case 2: fitted[std::size_t(s)] = truth; break;
+    default: fitted[std::size_t(s)] = perturbed(in, truth);
+    }
+  }
+  std::vector<SegmentContact> contacts(in.u8() % 8);
+  for (SegmentContact& c : contacts) {
+    c.a = int(in.u8() % (count + 1)) - (in.u8() % 8 == 0 ? 1 : 0);
+    c.b = int(in.u8() % (count + 1));
+    c.pairs = 1 + in.u8();
+    c.point = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
+  }
+  const double noise = in.special(0.05);
+  RelationOptions options;
+  if (in.bit()) {
+    options.angle_deg = in.special(45);
+    options.distance = in.special(0.5);
+    options.max_cost_increase = in.special(2);
+  }
+  std::vector<char> fixed;
+  if (in.bit())
+    for (int s = 0; s < count; ++s)
+      fixed.push_back(char(in.u8() % 4 == 0));
+
+  const RelatedPrimitives r = relate_primitives(fitted, samples, contacts, noise, options, fixed);
+  FUZZ_CHECK(r.primitives.size() == fitted.size());
+  if (!r.status.ok()) {
+    FUZZ_CHECK(r.relations.empty());
+    for (int s = 0; s < count; ++s)
+      FUZZ_CHECK(r.primitives[std::size_t(s)].has_value() == fitted[std::size_t(s)].has_value() &&
+                 (!fitted[std::size_t(s)] || same(*r.primitives[std::size_t(s)], *fitted[std::size_t(s)])));
+    return 0;
+  }
+  FUZZ_CHECK(r.dropped >= 0 && std::isfinite(r.distance));
+  auto related = [&](int s) {
+    return s >= 0 && s < count && fitted[std::size_t(s)] && primitive_is_valid(*fitted[std::size_t(s)]) &&
+           samples[std::size_t(s)].points.rows() > 0;
+  };
+  // The refit's own measure of a relation's violation: its residual, directions times the part's size.
+  std::vector<RelatedSegment> in_relations;
+  for (int s = 0; s < count; ++s)
+    if (related(s))
+      in_relations.push_back({*fitted[std::size_t(s)], samples[std::size_t(s)].points, {}, false});
+  const double length = relate_detail::part_size(in_relations);
+  for (const Relation& q : r.relations) {
+    FUZZ_CHECK(q.a != q.b && related(q.a) && related(q.b));
+    const Primitive& a = *r.primitives[std::size_t(q.a)];
+    const Primitive& b = *r.primitives[std::size_t(q.b)];
+    double residual[6] = {0, 0, 0, 0, 0, 0};
+    const int n = relation_components(q, a, b);
+    FUZZ_CHECK(n >= 1 && n <= 6);
+    relation_residual(q, a, b, relation_frame(a), length, residual);
+    for (int k = 0; k < n; ++k)
+      FUZZ_CHECK(std::abs(residual[k]) <= 1e-5 * length);
+  }
+  for (int s = 0; s < count; ++s) {
+    const std::optional<Primitive>& before = fitted[std::size_t(s)];
+    const std::optional<Primitive>& after = r.primitives[std::size_t(s)];
+    FUZZ_CHECK(before.has_value() == after.has_value());
+    if (!related(s)) {
+      FUZZ_CHECK(!before || same(*before, *after));
+      continue;
+    }
+    FUZZ_CHECK(primitive_is_valid(*after) && after->type == before->type);
+    if (std::size_t(s) < fixed.size() && fixed[std::size_t(s)])
+      FUZZ_CHECK(same(*before, *after));
+  }
+  return 0;
+}
