@@ -131,7 +131,7 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
     }
   std::vector<int> offset;
   const int n = relation_unknowns(segments, relations, offset);
-  if (n == 0 || relations.empty())
+  if (relations.empty())
     return finish();
   const double length = part_size(segments);
   // Aimed at, and enough: 1e-6 and 1e-4 mm on a 100 mm part (nearly dependent relations may stop short of
@@ -165,7 +165,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
   double violation = c.cwiseAbs().maxCoeff();
   double lambda = 1e-6;
   bool done = false;
-  for (out.iterations = 0; out.iterations < max_iterations && !done; ++out.iterations) {
+  // No unknowns (every related segment fixed): nothing to move, only the check below.
+  for (out.iterations = 0; out.iterations < max_iterations && !done && n > 0; ++out.iterations) {
     const Eigen::MatrixXd C = relation_jacobian(relations, p, layout, offset, n, length);
     bool accepted = false;
     for (int attempt = 0; attempt < 8 && !accepted; ++attempt, lambda *= 10) {

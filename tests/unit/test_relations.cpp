@@ -324,6 +324,36 @@ TEST(Relations, ASlenderConeIsCoaxialWithItsBore)
   EXPECT_LT(axis_offset(refit.primitives[0], refit.primitives[1]), 1e-6);
 }
 
+// Found by fuzz/fuzz_relate.cpp: with every segment of a relation held fixed (snapped in the edit tool) the
+// refit had nothing to move and reported success with the relation broken.
+TEST(Relations, ARelationBetweenFixedSegmentsIsCheckedNotAssumed)
+{
+  const Patch bore =
+      cylinder_patch(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::UnitZ(), 3, 6, 0, 2 * kPi, 500, 0.01, 31);
+  const Eigen::Vector3d tilted = Eigen::Vector3d(0.2, 0, 1).normalized();
+  const Patch pin = cylinder_patch(Eigen::Vector3d(10, 0, 0), tilted, 1, 6, 0, 2 * kPi, 500, 0.01, 32);
+  std::vector<RelatedSegment> segments(2);
+  for (int s = 0; s < 2; ++s) {
+    const Patch& p = s == 0 ? bore : pin;
+    segments[std::size_t(s)].primitive = p.truth;
+    segments[std::size_t(s)].points = p.samples.points;
+    segments[std::size_t(s)].fixed = true;
+  }
+  Relation parallel;
+  parallel.kind = RelationKind::Parallel;
+  parallel.a = 0;
+  parallel.b = 1;
+  RelationRefit refit = refit_with_relations(segments, {parallel});
+  EXPECT_FALSE(refit.status.ok());
+  EXPECT_GT(refit.max_violation, 0.1);
+  // With one of them free the refit turns it.
+  segments[1].fixed = false;
+  refit = refit_with_relations(segments, {parallel});
+  ASSERT_TRUE(refit.status.ok()) << refit.status.error;
+  EXPECT_LT(angle_deg(refit.primitives[0].axis, refit.primitives[1].axis), 1e-6);
+  EXPECT_EQ(refit.primitives[0].axis, segments[0].primitive.axis);
+}
+
 TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
 {
   const Scene scene = make_part(0.05);
