@@ -1,7 +1,7 @@
 // fuzz_fit.cpp: libFuzzer target over the fits of common/fit/ on small point sets, so that a long run covers
 // them at thousands of inputs a second (fuzz_common runs them inside the whole pipeline, a few a second).
 //
-// The bytes are decoded (fuzz_input.h) into up to 300 points of a patch of a plane, sphere, cylinder, cone or
+// The bytes are decoded (fuzz_input.h) into up to 100 points of a patch of a plane, sphere, cylinder, cone or
 // torus (or raw coordinates) with noise and special values, optional normals and weights, fit options and a
 // start primitive. Entry points: fit_primitive of a decoded type with each method, fit_quadric_direct,
 // fit_primitive_auto, refine_primitive from the decoded start, and fit_segment. Invariants: a fit that reports
@@ -22,7 +22,7 @@ using namespace fuzz;
 
 namespace {
 
-constexpr int kMaxPoints = 300;
+constexpr int kMaxPoints = 100;
 
 Eigen::MatrixX3d decode_normals(Decoder& in, Eigen::Index n)
 {

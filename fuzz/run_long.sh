@@ -6,7 +6,8 @@
 # from its own corpus under OUT (kept, so that a second run goes on from where the first stopped), then
 # prints a table of executions, seconds and executions a second per target and the total. Exits non-zero when
 # a target found a crash, a leak, undefined behaviour or a broken invariant (its input is saved in OUT as
-# <target>-crash-*, -leak-*, -timeout-* or -oom-*; replay it with `build-fuzz/fuzz/<target> FILE`).
+# <target>-crash-*, -leak-*, -timeout-* or -oom-*; replay it with `build-fuzz/fuzz/<target> FILE`). An
+# interrupted target (kill -INT of its process) counts the executions it ran.
 #
 # Usage: fuzz/run_long.sh [--build DIR] [--out DIR] [--jobs N] [--scale S]
 #   --build  the fuzz build tree (default build-fuzz)
@@ -49,6 +50,8 @@ run_one() {
   "$build/fuzz/$t" -runs="$n" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$out/$t-" "$out/corpus_$t" > "$out/$t.log" 2>&1 || status=$?
   awk -v end="$(date +%s.%N)" -v start="$start" 'BEGIN { print end - start }' > "$out/$t.seconds"
+  # 72: libFuzzer's exit code when interrupted (Ctrl-C, kill -INT): the executions so far still count.
+  [ "$status" = 72 ] && { echo "$t interrupted" >&2; return 0; }
   return $status
 }
 
@@ -71,8 +74,8 @@ done
 printf '%-14s %12s %9s %10s\n' target executions seconds "exec/s"
 total=0
 for t in "${targets[@]}"; do
-  done_line=$(grep -E '^Done [0-9]+ runs in [0-9]+ second' "$out/$t.log" | tail -1 || true)
-  n=$(echo "$done_line" | awk '{print $2}')
+  # libFuzzer's final statistics (also printed when the run is interrupted).
+  n=$(awk '/^stat::number_of_executed_units:/ { print $2 }' "$out/$t.log" | tail -1)
   s=$(cat "$out/$t.seconds" 2>/dev/null || true)
   n=${n:-0}
   s=${s:-0}
