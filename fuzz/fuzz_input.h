@@ -240,15 +240,7 @@ void build_mesh(Decoder& in, MeshType& m, const MeshLimits& limits = {})
 {
   using Scalar = typename MeshType::ScalarType;
   const int shape = in.u8() % 6;
-  const Primitive shape_prim = fuzz_primitive(in);
-  Primitive clean = shape_prim;
-  if (!primitive_is_valid(clean)) {
-    clean.origin.setZero();
-    clean.axis = Eigen::Vector3d::UnitZ();
-    clean.radius = 1;
-    clean.minor_radius = 0.4;
-    clean.half_angle = 0.5;
-  }
+  const Primitive clean = clean_primitive(fuzz_primitive(in));
   const double scale = std::pow(10.0, int(in.u8() % 13) - 6);  // 1e-6 .. 1e6
   const double noise = in.unit() * in.unit() * 0.05;
   const int rows = 2 + in.u8() % (limits.max_side - 1);
