@@ -42,8 +42,8 @@ namespace primitive_edit {
 struct AutoFitOptions
 {
   double tolerance = 0;  // max acceptable RMS in mesh units; <= 0: automatic (see roughness)
-  double roughness = 0;  // the data's noise RMS (estimate_surface_roughness.h), or 0 if unknown: the automatic
-                         // tolerance is max(1% of the bounding-box diagonal, 3 x roughness)
+  double roughness = 0;  // the data's noise RMS (estimate_surface_roughness.h), or 0 if unknown (so is a value not
+                         // finite): the automatic tolerance is max(1% of the bounding-box diagonal, 3 x roughness)
   FitOptions fit;
 };
 
@@ -93,8 +93,9 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     return out;
   }
   // A rough scan's segments deviate from their primitive by its roughness whatever their size.
-  const double tolerance = options.tolerance > 0 ? options.tolerance
-                                                 : std::max(0.01 * diagonal, 3.0 * std::max(0.0, options.roughness));
+  // A roughness that is not a positive number is unknown: an infinite one would make every type eligible.
+  const double roughness = options.roughness > 0 && std::isfinite(options.roughness) ? options.roughness : 0.0;
+  const double tolerance = options.tolerance > 0 ? options.tolerance : std::max(0.01 * diagonal, 3.0 * roughness);
   const FitSample s = fit_subsample(points, normals, weights, kAutoFitScreenPoints);
   FitOptions screen_options = options.fit;
   screen_options.max_iterations = std::min(screen_options.max_iterations, 20);

@@ -98,7 +98,8 @@ struct SegmentByPrimitiveGrowingParams
   int seed_patch_faces = 60;
   int min_region_faces = 0;      // <= 0: seed_patch_faces
   int smoothing_iterations = 10;
-  double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h); <= 0: estimated
+  double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h);
+                                 // <= 0 or not finite: estimated
   int threads = 0;               // for normal smoothing and the roughness (<= 0: all); the result does not depend on it
 };
 
@@ -213,8 +214,10 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       std::sqrt(double(scale.seed_patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
   // The scan's roughness is the mesh's, not this segmentation's: the same estimate (patches of a fixed share
   // of the surface) that the attribute keeps and the fit filters measure, whatever the seed patch size.
-  const double roughness =
-      params.roughness > 0 ? params.roughness : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
+  // A roughness that is not a positive number is unknown (as in relate_primitives), not a tolerance of its own.
+  const bool roughness_known = params.roughness > 0 && std::isfinite(params.roughness);
+  const double roughness = roughness_known ? params.roughness
+                                           : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   scale.tolerance = std::isfinite(tol) && tol > 0 ? tol : 0.0;
   clock.lap("roughness");

@@ -157,6 +157,11 @@ TEST(AutoFitTolerance, ARoughSegmentIsAPrimitiveWhenTheRoughnessIsKnown)
   const AutoFitResult known = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options);
   ASSERT_TRUE(known.status.ok()) << known.status.error;
   EXPECT_EQ(known.best.primitive.type, PrimitiveType::Plane);
+  // A roughness that is not a number is unknown, not an infinite tolerance that every type would meet.
+  for (double broken : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    options.roughness = broken;
+    EXPECT_FALSE(fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options).status.ok()) << broken;
+  }
 }
 
 TEST(SurfaceRoughnessAttribute, KeptUntilAVertexMoves)

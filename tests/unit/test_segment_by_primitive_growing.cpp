@@ -376,6 +376,27 @@ TYPED_TEST(PrimitiveGrowingTest, BadInputDoesNotCrash)
   EXPECT_EQ(segment_by_primitive_growing(tiny, SegmentByPrimitiveGrowingParams(), seg), 1);
 }
 
+// The roughness comes from the mesh attribute, not from the user: one that is not a positive number is unknown
+// and estimated, never an infinite or NaN tolerance (found by fuzz_segment).
+TYPED_TEST(PrimitiveGrowingTest, RoughnessNotFiniteIsEstimated)
+{
+  TypeParam m;
+  std::vector<int> truth;
+  make_profile_scan(m, 0.12, 0.02, truth);
+  std::vector<int> estimated, seg;
+  SegmentByPrimitiveGrowingReport expected, report;
+  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), estimated, &expected);
+  ASSERT_GT(expected.roughness, 0.0);
+  for (double broken : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    SegmentByPrimitiveGrowingParams params;
+    params.roughness = broken;
+    EXPECT_EQ(segment_by_primitive_growing(m, params, seg, &report), K) << broken;
+    EXPECT_EQ(seg, estimated) << broken;
+    EXPECT_EQ(report.roughness, expected.roughness) << broken;
+    EXPECT_EQ(report.tolerance, expected.tolerance) << broken;
+  }
+}
+
 // Out-of-range numbers are refused with the parameter's name, never changed: the segmentation would keep
 // within range on its own, so an adapter that skipped this check would silently use another value.
 TEST(PrimitiveGrowingParams, OutOfRangeIsRefusedByName)
