@@ -102,12 +102,65 @@ inline int relation_unknowns(const std::vector<RelatedSegment>& segments, const 
   return n;
 }
 
+inline bool relations_name_valid_segments(const std::vector<RelatedSegment>& segments,
+                                          const std::vector<Relation>& relations)
+{
+  const int count = int(segments.size());
+  for (const Relation& r : relations)
+    if (r.a < 0 || r.b < 0 || r.a >= count || r.b >= count || r.a == r.b ||
+        !primitive_is_valid(segments[std::size_t(r.a)].primitive) ||
+        !primitive_is_valid(segments[std::size_t(r.b)].primitive))
+      return false;
+  return true;
+}
+
+// The data term of the unknown segments at q: its cost and, if asked, each block's normal equations.
+inline double relation_data_term(const std::vector<RelatedSegment>& segments,
+                                 const std::vector<Eigen::VectorXd>& weights, const std::vector<int>& offset,
+                                 const std::vector<Primitive>& q, std::vector<StepBlock>* blocks)
+{
+  using namespace refine_detail;
+  double cost = 0;
+  if (blocks)
+    blocks->clear();
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (offset[s] < 0)
+      continue;
+    Mat7 JtJ;
+    Vec7 Jtr;
+    cost += normal_equations(q[s], segments[s].points, weights[s], &JtJ, &Jtr);
+    if (blocks) {
+      const int k = parameter_count(q[s].type);
+      blocks->push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]});
+    }
+  }
+  return cost;
+}
+
+// p moved by the step delta over the unknowns; false when a primitive would leave its valid domain.
+inline bool apply_relation_step(const std::vector<Primitive>& p, const std::vector<int>& offset,
+                                const Eigen::VectorXd& delta, std::vector<Primitive>& trial)
+{
+  using namespace refine_detail;
+  trial = p;
+  for (std::size_t s = 0; s < p.size(); ++s) {
+    if (offset[s] < 0)
+      continue;
+    const Primitive& base = p[s];
+    const Eigen::Vector3d e1 = any_orthogonal(base.axis), e2 = base.axis.cross(e1);
+    Vec7 d = Vec7::Zero();
+    d.head(parameter_count(base.type)) = delta.segment(offset[s], parameter_count(base.type));
+    if (!apply_step(base, e1, e2, d, &trial[s]))
+      return false;
+  }
+  return true;
+}
+
 } // namespace relate_detail
 
 inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& segments,
                                           const std::vector<Relation>& relations, int max_iterations = 40)
 {
-  using namespace refine_detail;
   using namespace relate_detail;
   RelationRefit out;
   const int count = int(segments.size());
@@ -122,13 +175,10 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
                                      weights[std::size_t(s)]));
     return out;
   };
-  for (const Relation& r : relations)
-    if (r.a < 0 || r.b < 0 || r.a >= count || r.b >= count || r.a == r.b ||
-        !primitive_is_valid(segments[std::size_t(r.a)].primitive) ||
-        !primitive_is_valid(segments[std::size_t(r.b)].primitive)) {
-      out.status = Status::failure("a relation names a segment without a valid primitive");
-      return finish();
-    }
+  if (!relations_name_valid_segments(segments, relations)) {
+    out.status = Status::failure("a relation names a segment without a valid primitive");
+    return finish();
+  }
   std::vector<int> offset;
   const int n = relation_unknowns(segments, relations, offset);
   if (relations.empty())
@@ -139,23 +189,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
   const double violation_tolerance = 1e-8 * length, violation_enough = 1e-6 * length;
 
   std::vector<Primitive>& p = out.primitives;
-  // The data term of the unknown segments at q: its cost and, if asked, each block's normal equations.
   auto data_term = [&](const std::vector<Primitive>& q, std::vector<StepBlock>* blocks) {
-    double cost = 0;
-    if (blocks)
-      blocks->clear();
-    for (int s = 0; s < count; ++s) {
-      if (offset[std::size_t(s)] < 0)
-        continue;
-      Mat7 JtJ;
-      Vec7 Jtr;
-      cost += normal_equations(q[std::size_t(s)], segments[std::size_t(s)].points, weights[std::size_t(s)], &JtJ, &Jtr);
-      if (blocks) {
-        const int k = parameter_count(q[std::size_t(s)].type);
-        blocks->push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[std::size_t(s)]});
-      }
-    }
-    return cost;
+    return relation_data_term(segments, weights, offset, q, blocks);
   };
 
   std::vector<StepBlock> blocks;
@@ -173,19 +208,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
       const Eigen::VectorXd delta = constrained_step(blocks, C, c, lambda);
       if (delta.size() != n)
         continue;
-      std::vector<Primitive> trial = p;
-      bool valid = true;
-      for (int s = 0; s < count && valid; ++s) {
-        const int o = offset[std::size_t(s)];
-        if (o < 0)
-          continue;
-        const Primitive& base = p[std::size_t(s)];
-        const Eigen::Vector3d e1 = any_orthogonal(base.axis), e2 = base.axis.cross(e1);
-        Vec7 d = Vec7::Zero();
-        d.head(parameter_count(base.type)) = delta.segment(o, parameter_count(base.type));
-        valid = apply_step(base, e1, e2, d, &trial[std::size_t(s)]);
-      }
-      if (!valid)
+      std::vector<Primitive> trial;
+      if (!apply_relation_step(p, offset, delta, trial))
         continue;
       const double trial_cost = data_term(trial, nullptr);
       const double trial_violation = relation_values(relations, trial, layout, length).cwiseAbs().maxCoeff();

@@ -138,6 +138,52 @@ double shared_edge_length(const MeshType& m, const std::vector<int>& fv, int f, 
   return 0.0;
 }
 
+// Per segment, the border length and edge count shared with the segment being absorbed; zero between calls.
+struct BorderScratch
+{
+  explicit BorderScratch(std::size_t segments) : length(segments, 0.0), edges(segments, 0) {}
+  std::vector<double> length;
+  std::vector<int> edges;
+  std::vector<int> touched;
+};
+
+// The segment (a root of parent) other than r that shares the longest border with the faces [first, last) of
+// r, ties to the most edges; -1 when none borders them.
+template <class MeshType>
+int neighbour_with_longest_border(const MeshType& m, const FaceAdjacency& adj, const std::vector<int>& fv,
+                                  const int* first, const int* last, const std::vector<int>& segment_of_face,
+                                  std::vector<int>& parent, int r, BorderScratch& scratch)
+{
+  for (const int* face = first; face != last; ++face) {
+    const int f = *face;
+    for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
+      const int g = adj.neighbour[std::size_t(k)];
+      const int sg = segment_of_face[std::size_t(g)];
+      if (sg < 0)
+        continue;
+      const int s = find_root(parent, sg);
+      if (s == r)
+        continue;
+      if (scratch.edges[std::size_t(s)] == 0)
+        scratch.touched.push_back(s);
+      scratch.length[std::size_t(s)] += shared_edge_length(m, fv, f, g);
+      ++scratch.edges[std::size_t(s)];
+    }
+  }
+  int best = -1;
+  for (int s : scratch.touched)
+    if (best < 0 || scratch.length[std::size_t(s)] > scratch.length[std::size_t(best)] ||
+        (scratch.length[std::size_t(s)] == scratch.length[std::size_t(best)] &&
+         scratch.edges[std::size_t(s)] > scratch.edges[std::size_t(best)]))
+      best = s;
+  for (int s : scratch.touched) {
+    scratch.length[std::size_t(s)] = 0.0;
+    scratch.edges[std::size_t(s)] = 0;
+  }
+  scratch.touched.clear();
+  return best;
+}
+
 // Absorbs segments smaller than min_faces into the neighbour segment with the longest shared border.
 // segment_of_face holds ids 0..K-1 (or -1); ids are left uncompacted.
 template <class MeshType>
@@ -163,9 +209,8 @@ void absorb_small_segments(const MeshType& m, const FaceAdjacency& adj, int min_
       candidates.push_back(int(f));
   }
 
-  std::vector<int> small_roots, slot(K, -1), face_offset, faces, touched;
-  std::vector<double> border(K, 0.0);
-  std::vector<int> border_edges(K, 0);
+  std::vector<int> small_roots, slot(K, -1), face_offset, faces;
+  BorderScratch scratch(K);
   for (;;) {
     // Group the candidate faces by their current (small, not isolated) root.
     small_roots.clear();
@@ -207,34 +252,9 @@ void absorb_small_segments(const MeshType& m, const FaceAdjacency& adj, int min_
       const int r = small_roots[std::size_t(i)];
       if (parent[std::size_t(r)] != r || size[std::size_t(r)] >= min_faces)
         continue; // absorbed by, or grown through, an earlier merge of this round
-      touched.clear();
-      for (int j = face_offset[std::size_t(i)]; j < face_offset[std::size_t(i) + 1]; ++j) {
-        const int f = faces[std::size_t(j)];
-        for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
-          const int g = adj.neighbour[std::size_t(k)];
-          const int sg = segment_of_face[std::size_t(g)];
-          if (sg < 0)
-            continue;
-          const int s = find_root(parent, sg);
-          if (s == r)
-            continue;
-          if (border_edges[std::size_t(s)] == 0)
-            touched.push_back(s);
-          border[std::size_t(s)] += shared_edge_length(m, fv, f, g);
-          ++border_edges[std::size_t(s)];
-        }
-      }
-      int best = -1;
-      for (int s : touched) {
-        if (best < 0 || border[std::size_t(s)] > border[std::size_t(best)] ||
-            (border[std::size_t(s)] == border[std::size_t(best)] &&
-             border_edges[std::size_t(s)] > border_edges[std::size_t(best)]))
-          best = s;
-      }
-      for (int s : touched) {
-        border[std::size_t(s)] = 0.0;
-        border_edges[std::size_t(s)] = 0;
-      }
+      const int best = neighbour_with_longest_border(m, adj, fv, faces.data() + face_offset[std::size_t(i)],
+                                                     faces.data() + face_offset[std::size_t(i) + 1],
+                                                     segment_of_face, parent, r, scratch);
       if (best < 0) {
         // Adjacency is symmetric, so a segment nobody borders now is a whole component: it stays.
         isolated[std::size_t(r)] = 1;
