@@ -40,10 +40,10 @@
 #include "common/pipeline/write_fits_json.h"
 #include "common/snap/snap_segments.h"
 #include "common/segment/split_segments_by_plane.h"
+#include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
 #include "fuzz/snap_checked.h"
 
-#include <common/ml_mesh_type.h>
 #include <vcg/complex/complex.h>
 
 #include <Eigen/Core>
@@ -416,11 +416,6 @@ void run(Decoder& in)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   Decoder in(data, size);
-  const uint8_t mesh_kind = in.u8();
-  if (mesh_kind & 1) {
-    run<CMeshO>(in);
-  } else {
-    run<fuzz_mesh::FMesh>(in);
-  }
+  on_decoded_mesh_type(in, [&](auto tag) { run<typename decltype(tag)::Mesh>(in); });
   return 0;
 }

@@ -100,7 +100,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   std::vector<SegmentContact> contacts(in.u8() % 8);
   for (SegmentContact& c : contacts) {
-    c.a = int(in.u8() % (count + 1)) - (in.u8() % 8 == 0 ? 1 : 0);
+    // Ids from -1 to count: one beyond each end.
+    const int a = int(in.u8() % (count + 1));
+    c.a = in.u8() % 8 == 0 ? a - 1 : a;
     c.b = int(in.u8() % (count + 1));
     c.pairs = 1 + in.u8();
     c.point = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
@@ -132,11 +134,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
            samples[std::size_t(s)].points.rows() > 0;
   };
   // The refit's own measure of a relation's violation: its residual, directions times the part's size.
-  std::vector<RelatedSegment> in_relations;
-  for (int s = 0; s < count; ++s)
-    if (related(s))
-      in_relations.push_back({*fitted[std::size_t(s)], samples[std::size_t(s)].points, {}, false});
-  const double length = relate_detail::part_size(in_relations);
+  const double length = r.length;
+  FUZZ_CHECK(std::isfinite(length) && length >= 0);
   for (const Relation& q : r.relations) {
     FUZZ_CHECK(q.a != q.b && related(q.a) && related(q.b));
     const Primitive& a = *r.primitives[std::size_t(q.a)];

@@ -11,9 +11,8 @@
 #include "common/mesh/surface_roughness_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
+#include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
-
-#include <common/ml_mesh_type.h>
 
 #include <cstdint>
 
@@ -73,9 +72,6 @@ void run(Decoder& in)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   Decoder in(data, size);
-  if (in.u8() & 1)
-    run<CMeshO>(in);
-  else
-    run<fuzz_mesh::FMesh>(in);
+  on_decoded_mesh_type(in, [&](auto tag) { run<typename decltype(tag)::Mesh>(in); });
   return 0;
 }

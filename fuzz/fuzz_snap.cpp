@@ -10,10 +10,9 @@
 #include "common/fit/fit_primitive.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/gather_segment_samples.h"
+#include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
 #include "fuzz/snap_checked.h"
-
-#include <common/ml_mesh_type.h>
 
 #include <cstdint>
 #include <optional>
@@ -83,9 +82,6 @@ void run(Decoder& in)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   Decoder in(data, size);
-  if (in.u8() & 1)
-    run<CMeshO>(in);
-  else
-    run<fuzz_mesh::FMesh>(in);
+  on_decoded_mesh_type(in, [&](auto tag) { run<typename decltype(tag)::Mesh>(in); });
   return 0;
 }

@@ -60,6 +60,7 @@ struct RelatedPrimitives
   std::vector<std::optional<Primitive>> primitives;
   int dropped = 0;       // relations found but dropped by the check after the refit
   double distance = 0;   // the distance tolerance used
+  double length = 0;     // the part's size, which turns a relation's angle residuals into distances
 };
 
 constexpr Eigen::Index kRelateSamples = 3000;
@@ -160,6 +161,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
       start[std::size_t(s)] = &segments[std::size_t(s)].primitive;
   }
   const double length = part_size(segments);
+  out.length = length;
   // Each segment's residuals in units of its own noise (maximum likelihood with a noise per segment): in the
   // joint refit an exact face stays and a rough one follows. The checks compare each segment's cost with its
   // own, so they do not change.
