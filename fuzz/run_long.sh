@@ -10,24 +10,28 @@
 # when a target found a crash, a leak, undefined behaviour or a broken invariant (its input is saved in OUT as
 # <target>-crash-*, -leak-*, -timeout-* or -oom-*; replay it with `build-fuzz/fuzz/<target> FILE`).
 #
-# Usage: fuzz/run_long.sh [--build DIR] [--out DIR] [--jobs N] [--scale S]
+# Usage: fuzz/run_long.sh [--build DIR] [--out DIR] [--jobs N] [--scale S] [--timeout S]
 #   --build  the fuzz build tree (default build-fuzz)
 #   --out    corpora, logs, ledger and crash inputs (default build-fuzz/long-run)
 #   --jobs   targets run at once (default 4: all; the machine's cores are shared)
 #   --scale  multiplies the executions per target (default 1: 10^7 in all; 0.01 for a quick try)
+#   --timeout  seconds of wall time one input may take (default 10: the slowest inputs take about 0.5 s); a
+#            run at low priority beside builds can stall an input that long, so give it more there (120)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-fuzz
 out=
 jobs=4
 scale=1
+timeout=10
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --scale) scale=$2; shift 2 ;;
-    *) echo "usage: $0 [--build DIR] [--out DIR] [--jobs N] [--scale S]" >&2; exit 2 ;;
+    --timeout) timeout=$2; shift 2 ;;
+    *) echo "usage: $0 [--build DIR] [--out DIR] [--jobs N] [--scale S] [--timeout S]" >&2; exit 2 ;;
   esac
 done
 out=${out:-$build/long-run}
@@ -48,7 +52,7 @@ run_one() {
   local start
   start=$(date +%s.%N)
   local status=0
-  "$build/fuzz/$t" -runs="$n" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+  "$build/fuzz/$t" -runs="$n" -timeout="$timeout" -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$out/$t-" "$out/corpus_$t" > "$out/$t.log" 2>&1 || status=$?
   awk -v end="$(date +%s.%N)" -v start="$start" 'BEGIN { print end - start }' > "$out/$t.seconds"
   # 72: libFuzzer's exit code when interrupted (Ctrl-C, kill -INT): the executions so far still count.
