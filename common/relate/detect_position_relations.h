@@ -26,6 +26,7 @@
 #ifndef PRIMITIVE_EDIT_DETECT_POSITION_RELATIONS_H
 #define PRIMITIVE_EDIT_DETECT_POSITION_RELATIONS_H
 
+#include "common/base/find_root.h"
 #include "common/mesh/segment_contacts.h"
 #include "common/relate/relation_cost_increase.h"
 
@@ -60,13 +61,6 @@ inline Eigen::Vector3d axis_point_facing(const Primitive& p, const Primitive& ot
   if (p.type != PrimitiveType::Cone || other.type == PrimitiveType::Cone)
     return p.origin;
   return p.origin + p.axis.dot(other.origin - p.origin) * p.axis;
-}
-
-inline int find_root(std::vector<int>& parent, int s)
-{
-  while (parent[std::size_t(s)] != s)
-    s = parent[std::size_t(s)] = parent[std::size_t(parent[std::size_t(s)])];
-  return s;
 }
 
 struct Candidate

@@ -17,6 +17,7 @@
 #ifndef PRIMITIVE_EDIT_MERGE_REGIONS_H
 #define PRIMITIVE_EDIT_MERGE_REGIONS_H
 
+#include "common/base/find_root.h"
 #include "common/segment/fit_region_primitive.h"
 #include "common/segment/grow_regions.h"
 
@@ -97,15 +98,6 @@ inline std::vector<std::tuple<int, int, int>> region_borders(const FaceAdjacency
   }
   std::sort(borders.begin(), borders.end());
   return borders;
-}
-
-inline int find_root(std::vector<int>& parent, int s)
-{
-  while (parent[std::size_t(s)] != s) {
-    parent[std::size_t(s)] = parent[std::size_t(parent[std::size_t(s)])];
-    s = parent[std::size_t(s)];
-  }
-  return s;
 }
 
 } // namespace merge_detail

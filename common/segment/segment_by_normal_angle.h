@@ -37,6 +37,7 @@
 #define PRIMITIVE_EDIT_SEGMENT_BY_NORMAL_ANGLE_H
 
 #include "common/base/constants.h"
+#include "common/base/find_root.h"
 #include "common/base/progress.h"
 #include "common/base/status.h"
 #include "common/mesh/compact_segment_ids.h"
@@ -105,19 +106,6 @@ inline Status check_normal_angle_params(const SegmentByNormalAngleParams& params
 }
 
 namespace detail {
-
-inline int find_root(std::vector<int>& parent, int s)
-{
-  int root = s;
-  while (parent[std::size_t(root)] != root)
-    root = parent[std::size_t(root)];
-  while (parent[std::size_t(s)] != root) {
-    const int up = parent[std::size_t(s)];
-    parent[std::size_t(s)] = root;
-    s = up;
-  }
-  return root;
-}
 
 // Length of the edge faces f and g share (0 when it is not finite); fv holds 3 vertex indices per face.
 template <class MeshType>
