@@ -27,6 +27,7 @@
 #ifndef PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 #define PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 
+#include "common/base/known_scale.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_subsample.h"
 #include "common/fit/refine_primitive.h"
@@ -93,8 +94,7 @@ inline AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Ei
     return out;
   }
   // A rough scan's segments deviate from their primitive by its roughness whatever their size.
-  // A roughness that is not a positive number is unknown: an infinite one would make every type eligible.
-  const double roughness = options.roughness > 0 && std::isfinite(options.roughness) ? options.roughness : 0.0;
+  const double roughness = is_known_scale(options.roughness) ? options.roughness : 0.0;
   const double tolerance = options.tolerance > 0 ? options.tolerance : std::max(0.01 * diagonal, 3.0 * roughness);
   const FitSample s = fit_subsample(points, normals, weights, kAutoFitScreenPoints);
   FitOptions screen_options = options.fit;

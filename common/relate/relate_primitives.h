@@ -25,6 +25,7 @@
 #define PRIMITIVE_EDIT_RELATE_PRIMITIVES_H
 
 #include "common/base/constants.h"
+#include "common/base/known_scale.h"
 #include "common/base/status.h"
 #include "common/fit/fit_residuals.h"
 #include "common/mesh/gather_segment_samples.h"
@@ -171,8 +172,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
       const double rms = fit_residuals(r.primitive, r.points, r.weights).rms;
       r.weights /= rms * rms + 1e-14 * length * length;
     }
-  const bool noise_known = noise > 0 && std::isfinite(noise);
-  out.distance = options.distance > 0 ? options.distance : noise_known ? 3.0 * noise : 0.01 * length;
+  out.distance = options.distance > 0 ? options.distance : is_known_scale(noise) ? 3.0 * noise : 0.01 * length;
   const double angle = radians_from_degrees(options.angle_deg);
 
   auto information = [&](const std::vector<const Primitive*>& p) {

@@ -65,6 +65,7 @@
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
 #include "common/base/constants.h"
+#include "common/base/known_scale.h"
 #include "common/base/primitive.h"
 #include "common/base/progress.h"
 #include "common/base/status.h"
@@ -214,9 +215,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       std::sqrt(double(scale.seed_patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
   // The scan's roughness is the mesh's, not this segmentation's: the same estimate (patches of a fixed share
   // of the surface) that the attribute keeps and the fit filters measure, whatever the seed patch size.
-  // A roughness that is not a positive number is unknown (as in relate_primitives), not a tolerance of its own.
-  const bool roughness_known = params.roughness > 0 && std::isfinite(params.roughness);
-  const double roughness = roughness_known ? params.roughness
+  const double roughness = is_known_scale(params.roughness) ? params.roughness
                                            : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   scale.tolerance = std::isfinite(tol) && tol > 0 ? tol : 0.0;
