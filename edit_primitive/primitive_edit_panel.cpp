@@ -34,8 +34,17 @@ QString show_number(double x) { return QString::number(x, 'g', 10); }
 PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
 {
   auto* layout = new QVBoxLayout(this);
-
   setFixedWidth(kPanelWidth);
+  layout->addWidget(buildSegmentsGroup());
+  layout->addWidget(buildPrimitiveGroup());
+  buildFooter(layout);
+  showPrimitive(std::nullopt, 0);
+  setCanUndo(false, QString());
+}
+
+// Segments: the method and its parameters, Segment, the counts and Merge.
+QGroupBox* PrimitiveEditPanel::buildSegmentsGroup()
+{
   auto* segmentation = new QGroupBox("Segments", this);
   auto* seg_layout = new QFormLayout(segmentation);
   segmentation_fields_ = seg_layout;
@@ -76,8 +85,20 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   auto* merge = new QPushButton("&Merge picked", segmentation);
   merge->setToolTip("Merge the picked segments into one (key M).");
   seg_layout->addRow(merge);
-  layout->addWidget(segmentation);
 
+  connect(segment, &QPushButton::clicked, this, &PrimitiveEditPanel::segmentRequested);
+  connect(method_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          &PrimitiveEditPanel::updateSegmentationFields);
+  // A method chosen (Alt+M and the arrow keys, or the mouse): the keys go back to the view, S segments.
+  connect(method_, QOverload<int>::of(&QComboBox::activated), this, &PrimitiveEditPanel::viewFocusRequested);
+  updateSegmentationFields();
+  connect(merge, &QPushButton::clicked, this, &PrimitiveEditPanel::mergeRequested);
+  return segmentation;
+}
+
+// Primitive: the type and Fit, the fit method, the parameters, the RMS and Apply.
+QGroupBox* PrimitiveEditPanel::buildPrimitiveGroup()
+{
   auto* primitive = new QGroupBox("Primitive", this);
   fields_ = new QFormLayout(primitive);
   type_ = new QComboBox(primitive);
@@ -110,8 +131,15 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   apply_ = new QPushButton("&Apply", primitive);
   apply_->setToolTip("Move the picked segments onto the primitive with these parameters (key Enter).");
   fields_->addRow(apply_);
-  layout->addWidget(primitive);
 
+  connect(fit, &QPushButton::clicked, this, &PrimitiveEditPanel::fitRequested);
+  connect(apply_, &QPushButton::clicked, this, &PrimitiveEditPanel::applyRequested);
+  return primitive;
+}
+
+// Below the groups: Undo, the status line and the help.
+void PrimitiveEditPanel::buildFooter(QVBoxLayout* layout)
+{
   undo_ = new QPushButton("&Undo", this);
   undo_->setToolTip("Undo the last segmentation, merge, split or apply (Ctrl+Z or U).");
   layout->addWidget(undo_);
@@ -126,19 +154,7 @@ PrimitiveEditPanel::PrimitiveEditPanel(QWidget* parent) : QWidget(parent)
   help->setWordWrap(true);
   layout->addWidget(help);
   layout->addStretch(1);
-
-  connect(segment, &QPushButton::clicked, this, &PrimitiveEditPanel::segmentRequested);
-  connect(method_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-          &PrimitiveEditPanel::updateSegmentationFields);
-  // A method chosen (Alt+M and the arrow keys, or the mouse): the keys go back to the view, S segments.
-  connect(method_, QOverload<int>::of(&QComboBox::activated), this, &PrimitiveEditPanel::viewFocusRequested);
-  updateSegmentationFields();
-  connect(merge, &QPushButton::clicked, this, &PrimitiveEditPanel::mergeRequested);
-  connect(fit, &QPushButton::clicked, this, &PrimitiveEditPanel::fitRequested);
-  connect(apply_, &QPushButton::clicked, this, &PrimitiveEditPanel::applyRequested);
   connect(undo_, &QPushButton::clicked, this, &PrimitiveEditPanel::undoRequested);
-  showPrimitive(std::nullopt, 0);
-  setCanUndo(false, QString());
 }
 
 QLineEdit* PrimitiveEditPanel::addField(const QString& label)

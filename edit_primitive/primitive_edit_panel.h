@@ -60,6 +60,9 @@ signals:
   void viewFocusRequested();
 
 private:
+  class QGroupBox* buildSegmentsGroup();
+  class QGroupBox* buildPrimitiveGroup();
+  void buildFooter(class QVBoxLayout* layout);
   QLineEdit* addField(const QString& label);
   void fieldEdited(QLineEdit* field);
   void updateFieldVisibility();
