@@ -215,8 +215,9 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
       std::sqrt(double(scale.seed_patch_faces) * std::sqrt(3.0) / 4.0 * mean_edge * mean_edge / kPi);
   // The scan's roughness is the mesh's, not this segmentation's: the same estimate (patches of a fixed share
   // of the surface) that the attribute keeps and the fit filters measure, whatever the seed patch size.
-  const double roughness = is_known_scale(params.roughness) ? params.roughness
-                                           : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
+  const double roughness = is_known_scale(params.roughness)
+                               ? params.roughness
+                               : estimate_surface_roughness(g.centroid, g.area, adj, 0, params.threads);
   double tol = params.tolerance > 0 ? params.tolerance : std::max(3.0 * roughness, 0.05 * mean_edge);
   scale.tolerance = std::isfinite(tol) && tol > 0 ? tol : 0.0;
   clock.lap("roughness");
