@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace primitive_edit {
@@ -211,7 +212,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
       std::vector<Primitive> trial;
       if (!apply_relation_step(p, offset, delta, trial))
         continue;
-      const double trial_cost = data_term(trial, nullptr);
+      std::vector<StepBlock> trial_blocks;  // taken on when the step is, instead of a second pass over the points
+      const double trial_cost = data_term(trial, &trial_blocks);
       const double trial_violation = relation_values(relations, trial, layout, length).cwiseAbs().maxCoeff();
       // Feasibility first; once feasible, the cost may fall as long as feasibility is kept.
       const bool feasibility = violation > violation_tolerance && trial_violation < 0.5 * violation;
@@ -220,7 +222,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
         continue;
       done = !feasibility && cost - trial_cost <= 1e-6 * cost && trial_violation <= violation_enough;
       p = trial;
-      cost = data_term(p, &blocks);
+      cost = trial_cost;
+      blocks = std::move(trial_blocks);
       layout = relation_layout(relations, p);
       c = relation_values(relations, p, layout, length);
       violation = c.cwiseAbs().maxCoeff();
