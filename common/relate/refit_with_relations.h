@@ -115,25 +115,23 @@ inline bool relations_name_valid_segments(const std::vector<RelatedSegment>& seg
   return true;
 }
 
-// The data term of the unknown segments at q: its cost and, if asked, each block's normal equations.
+// The data term of the unknown segments at q: its cost and each block's normal equations (one pass: a tried
+// step's blocks are the next step's when it is taken).
 inline double relation_data_term(const std::vector<RelatedSegment>& segments,
                                  const std::vector<Eigen::VectorXd>& weights, const std::vector<int>& offset,
-                                 const std::vector<Primitive>& q, std::vector<StepBlock>* blocks)
+                                 const std::vector<Primitive>& q, std::vector<StepBlock>& blocks)
 {
   using namespace refine_detail;
   double cost = 0;
-  if (blocks)
-    blocks->clear();
+  blocks.clear();
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (offset[s] < 0)
       continue;
     Mat7 JtJ;
     Vec7 Jtr;
     cost += normal_equations(q[s], segments[s].points, weights[s], &JtJ, &Jtr);
-    if (blocks) {
-      const int k = parameter_count(q[s].type);
-      blocks->push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]});
-    }
+    const int k = parameter_count(q[s].type);
+    blocks.push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]});
   }
   return cost;
 }
@@ -190,12 +188,12 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
   const double violation_tolerance = 1e-8 * length, violation_enough = 1e-6 * length;
 
   std::vector<Primitive>& p = out.primitives;
-  auto data_term = [&](const std::vector<Primitive>& q, std::vector<StepBlock>* blocks) {
+  auto data_term = [&](const std::vector<Primitive>& q, std::vector<StepBlock>& blocks) {
     return relation_data_term(segments, weights, offset, q, blocks);
   };
 
   std::vector<StepBlock> blocks;
-  double cost = data_term(p, &blocks);
+  double cost = data_term(p, blocks);
   RelationLayout layout = relation_layout(relations, p);
   Eigen::VectorXd c = relation_values(relations, p, layout, length);
   double violation = c.cwiseAbs().maxCoeff();
@@ -212,8 +210,8 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
       std::vector<Primitive> trial;
       if (!apply_relation_step(p, offset, delta, trial))
         continue;
-      std::vector<StepBlock> trial_blocks;  // taken on when the step is, instead of a second pass over the points
-      const double trial_cost = data_term(trial, &trial_blocks);
+      std::vector<StepBlock> trial_blocks;
+      const double trial_cost = data_term(trial, trial_blocks);
       const double trial_violation = relation_values(relations, trial, layout, length).cwiseAbs().maxCoeff();
       // Feasibility first; once feasible, the cost may fall as long as feasibility is kept.
       const bool feasibility = violation > violation_tolerance && trial_violation < 0.5 * violation;
