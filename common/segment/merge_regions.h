@@ -1,7 +1,8 @@
 // merge_regions.h: the second phase of segment_by_primitive_growing: adjacent grown regions that are one
 // surface become one region.
 //
-// Input:  GrowingFaces, the FaceAdjacency, the GrowingRegions of grow_regions.h and its GrowingScale.
+// Input:  GrowingFaces, the FaceAdjacency, the GrowingRegions of grow_regions.h, its GrowingScale and the threads
+//         (parallel_for.h; <= 0: all).
 // Output: the regions merged in place: a merged region keeps the smaller id and the union's primitive, the
 //         other keeps no faces; label follows. Returns the number of merges.
 // Method: pairs of adjacent regions, longest shared border first, in rounds until nothing merges (after the
@@ -13,15 +14,21 @@
 //         on the union, so the types may differ (a piece of a wavy plane that growth fitted with a torus
 //         joins the plane), except that a torus is tried only for two tori: it has the freedom to also fit a
 //         fillet with the faces it joins. The candidate whose worse region agrees most wins.
-// Cost:   O(E log E) for the borders; per round O(region adjacencies * (kFitSampleCount + kShareSampleCount)).
+//         The pairs are tested kMergeWindowPerThread per thread at once (the tests only read the regions), then
+//         merged in border order; a pair whose region a merge of its window changed is tested again, so the
+//         merges are those of testing one pair after the other on any thread count.
+// Cost:   O(E log E) for the borders; per round O(region adjacencies * (kFitSampleCount + kShareSampleCount)),
+//         divided by the threads but for the pairs tested again.
 #ifndef PRIMITIVE_EDIT_MERGE_REGIONS_H
 #define PRIMITIVE_EDIT_MERGE_REGIONS_H
 
 #include "common/base/find_root.h"
+#include "common/base/parallel_for.h"
 #include "common/segment/fit_region_primitive.h"
 #include "common/segment/grow_regions.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <tuple>
@@ -31,6 +38,8 @@
 namespace primitive_edit {
 
 constexpr double kMergeShare = 0.5; // share of each region that must agree with the union's primitive
+// Pairs tested at once per thread: fewer leave a thread idle behind a long test, more test stale pairs.
+constexpr std::size_t kMergeWindowPerThread = 4;
 
 inline std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vector<int>& fa, const Primitive& pa,
                                                  const std::vector<int>& fb, const Primitive& pb,
@@ -103,7 +112,7 @@ inline std::vector<std::tuple<int, int, int>> region_borders(const FaceAdjacency
 } // namespace merge_detail
 
 inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                         GrowingRegions& regions)
+                         GrowingRegions& regions, int threads = 0)
 {
   using namespace merge_detail;
   const int count = int(regions.primitive.size());
@@ -111,31 +120,73 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
   std::vector<int> parent(static_cast<std::size_t>(count));
   for (int r = 0; r < count; ++r)
     parent[std::size_t(r)] = r;
+  auto roots = [&](std::size_t border) {
+    return std::make_pair(find_root(parent, std::get<1>(borders[border])),
+                          find_root(parent, std::get<2>(borders[border])));
+  };
   std::vector<int> merged_in(static_cast<std::size_t>(count), 0);
-  std::vector<int> both;
-  int total = 0;
+  // After the first round only pairs with a region that merged in the round before are tested.
+  auto tested = [&](std::pair<int, int> ab, int round) {
+    return ab.first != ab.second && (round == 1 || merged_in[std::size_t(ab.first)] == round - 1 ||
+                                     merged_in[std::size_t(ab.second)] == round - 1);
+  };
+  auto test = [&](std::pair<int, int> ab, std::vector<int>& both) {
+    const std::vector<int>& fa = regions.faces[std::size_t(ab.first)];
+    const std::vector<int>& fb = regions.faces[std::size_t(ab.second)];
+    both = fa;
+    both.insert(both.end(), fb.begin(), fb.end());
+    return merged_primitive(g, fa, regions.primitive[std::size_t(ab.first)], fb,
+                            regions.primitive[std::size_t(ab.second)], both, scale);
+  };
+  // One thread tests one pair at a time; more take a window of pairs (see Method above).
+  const std::size_t lanes = std::size_t(resolve_thread_count(threads));
+  const std::size_t window_size = lanes > 1 ? kMergeWindowPerThread * lanes : 1;
+  std::vector<std::size_t> window;
+  std::vector<std::pair<int, int>> pair_of(window_size);
+  std::vector<std::optional<Primitive>> joint(window_size);
+  std::vector<std::vector<int>> both(lanes); // each thread's union of a pair's faces, kept to spare allocations
+  std::vector<int> changed_in_window(static_cast<std::size_t>(count), -1);
+  int total = 0, windows = 0;
   for (int round = 1, merges = 1; merges > 0; ++round) {
     merges = 0;
-    for (const auto& border : borders) {
-      const int a = find_root(parent, std::get<1>(border));
-      const int b = find_root(parent, std::get<2>(border));
-      if (a == b || (round > 1 && merged_in[std::size_t(a)] != round - 1 && merged_in[std::size_t(b)] != round - 1))
-        continue;
-      const std::vector<int>& fa = regions.faces[std::size_t(a)];
-      const std::vector<int>& fb = regions.faces[std::size_t(b)];
-      both = fa;
-      both.insert(both.end(), fb.begin(), fb.end());
-      const std::optional<Primitive> joint = merged_primitive(g, fa, regions.primitive[std::size_t(a)], fb,
-                                                              regions.primitive[std::size_t(b)], both, scale);
-      if (!joint)
-        continue;
-      const int keep = std::min(a, b), gone = std::max(a, b);
-      parent[std::size_t(gone)] = keep;
-      regions.primitive[std::size_t(keep)] = *joint;
-      regions.faces[std::size_t(keep)].swap(both);
-      std::vector<int>().swap(regions.faces[std::size_t(gone)]);
-      merged_in[std::size_t(keep)] = round;
-      ++merges;
+    for (std::size_t next = 0; next < borders.size();) {
+      window.clear();
+      for (; next < borders.size() && window.size() < window_size; ++next) {
+        const std::pair<int, int> ab = roots(next);
+        if (tested(ab, round)) {
+          pair_of[window.size()] = ab;
+          window.push_back(next);
+        }
+      }
+      std::atomic<std::size_t> taken{0};
+      // As many ranges as threads, one index each: the index names the thread's buffer.
+      parallel_for(std::min(lanes, window.size()), int(lanes), 1, [&](std::size_t lane, std::size_t) {
+        for (std::size_t i; (i = taken++) < window.size();)
+          joint[i] = test(pair_of[i], both[lane]);
+      });
+      ++windows;
+      for (std::size_t i = 0; i < window.size(); ++i) {
+        const std::pair<int, int> ab = roots(window[i]);
+        if (!tested(ab, round))
+          continue;
+        const auto [a, b] = ab;
+        const bool fresh = ab == pair_of[i] && changed_in_window[std::size_t(a)] != windows &&
+                           changed_in_window[std::size_t(b)] != windows;
+        const std::optional<Primitive> merged = fresh ? joint[i] : test(ab, both[0]);
+        if (!merged)
+          continue;
+        const int keep = std::min(a, b), gone = std::max(a, b);
+        parent[std::size_t(gone)] = keep;
+        regions.primitive[std::size_t(keep)] = *merged;
+        std::vector<int>& joined = both[0];
+        joined = regions.faces[std::size_t(a)];
+        joined.insert(joined.end(), regions.faces[std::size_t(b)].begin(), regions.faces[std::size_t(b)].end());
+        regions.faces[std::size_t(keep)].swap(joined);
+        std::vector<int>().swap(regions.faces[std::size_t(gone)]);
+        merged_in[std::size_t(keep)] = round;
+        changed_in_window[std::size_t(keep)] = windows;
+        ++merges;
+      }
     }
     total += merges;
   }

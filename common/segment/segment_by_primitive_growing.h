@@ -101,7 +101,8 @@ struct SegmentByPrimitiveGrowingParams
   int smoothing_iterations = 10;
   double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h);
                                  // <= 0 or not finite: estimated
-  int threads = 0;               // for normal smoothing and the roughness (<= 0: all); the result does not depend on it
+  int threads = 0;               // for normal smoothing, the roughness and the merge tests (<= 0: all); the result
+                                 // does not depend on it
 };
 
 // The ranges a user's parameters must lie in; the segmentation itself keeps within them whatever it is given
@@ -228,7 +229,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("grow");
 
   report_progress(progress, 70, "Merging regions");
-  merge_regions(g, adj, scale, regions);
+  merge_regions(g, adj, scale, regions, params.threads);
   clock.lap("merge");
   dissolve_rough_regions(g, adj, scale, regions);
   clock.lap("dissolve");

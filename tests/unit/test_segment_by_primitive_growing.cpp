@@ -320,6 +320,36 @@ TYPED_TEST(PrimitiveGrowingTest, WavyPlaneAndWallGiveTwoSegments)
   }
 }
 
+TYPED_TEST(PrimitiveGrowingTest, SameSegmentsOnEveryThreadCount)
+{
+  // The wavy surfaces grow many regions that merging joins; its pair tests run a window per thread count.
+  TypeParam m;
+  std::vector<int> truth;
+  make_wavy_corner(m, 0.25, 0.5, truth);
+  SegmentByPrimitiveGrowingParams params;
+  params.tolerance = 0.8;
+  params.threads = 1;
+  std::vector<int> one;
+  SegmentByPrimitiveGrowingReport one_report;
+  const int K = segment_by_primitive_growing(m, params, one, &one_report);
+  ASSERT_GT(one_report.grown_regions, K + 2) << "too few merges to compare";
+  for (int threads : {2, 3}) {
+    params.threads = threads;
+    std::vector<int> seg;
+    SegmentByPrimitiveGrowingReport report;
+    EXPECT_EQ(segment_by_primitive_growing(m, params, seg, &report), K) << threads << " threads";
+    EXPECT_EQ(seg, one) << threads << " threads";
+    ASSERT_EQ(report.primitive_of_segment.size(), one_report.primitive_of_segment.size());
+    for (std::size_t k = 0; k < report.primitive_of_segment.size(); ++k) {
+      ASSERT_EQ(report.primitive_of_segment[k].has_value(), one_report.primitive_of_segment[k].has_value());
+      if (report.primitive_of_segment[k]) {
+        EXPECT_EQ(report.primitive_of_segment[k]->origin, one_report.primitive_of_segment[k]->origin);
+        EXPECT_EQ(report.primitive_of_segment[k]->axis, one_report.primitive_of_segment[k]->axis);
+      }
+    }
+  }
+}
+
 TYPED_TEST(PrimitiveGrowingTest, BadInputDoesNotCrash)
 {
   std::vector<int> seg{1, 2, 3};
