@@ -130,13 +130,17 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
     return ab.first != ab.second && (round == 1 || merged_in[std::size_t(ab.first)] == round - 1 ||
                                      merged_in[std::size_t(ab.second)] == round - 1);
   };
-  auto test = [&](std::pair<int, int> ab, std::vector<int>& both) {
-    const std::vector<int>& fa = regions.faces[std::size_t(ab.first)];
+  // The union's faces: a's, then b's (the order a merged region keeps, which its later samples stride over).
+  auto join = [&](std::pair<int, int> ab, std::vector<int>& both) {
     const std::vector<int>& fb = regions.faces[std::size_t(ab.second)];
-    both = fa;
+    both = regions.faces[std::size_t(ab.first)];
     both.insert(both.end(), fb.begin(), fb.end());
-    return merged_primitive(g, fa, regions.primitive[std::size_t(ab.first)], fb,
-                            regions.primitive[std::size_t(ab.second)], both, scale);
+  };
+  auto test = [&](std::pair<int, int> ab, std::vector<int>& both) {
+    join(ab, both);
+    return merged_primitive(g, regions.faces[std::size_t(ab.first)], regions.primitive[std::size_t(ab.first)],
+                            regions.faces[std::size_t(ab.second)], regions.primitive[std::size_t(ab.second)], both,
+                            scale);
   };
   // One thread tests one pair at a time; more take a window of pairs (see Method above).
   const std::size_t lanes = std::size_t(resolve_thread_count(threads));
@@ -178,10 +182,8 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
         const int keep = std::min(a, b), gone = std::max(a, b);
         parent[std::size_t(gone)] = keep;
         regions.primitive[std::size_t(keep)] = *merged;
-        std::vector<int>& joined = both[0];
-        joined = regions.faces[std::size_t(a)];
-        joined.insert(joined.end(), regions.faces[std::size_t(b)].begin(), regions.faces[std::size_t(b)].end());
-        regions.faces[std::size_t(keep)].swap(joined);
+        join(ab, both[0]);
+        regions.faces[std::size_t(keep)].swap(both[0]);
         std::vector<int>().swap(regions.faces[std::size_t(gone)]);
         merged_in[std::size_t(keep)] = round;
         changed_in_window[std::size_t(keep)] = windows;
