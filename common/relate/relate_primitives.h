@@ -7,7 +7,8 @@
 //         RelationOptions.
 // Output: RelatedPrimitives: the relations kept, each segment's primitive after the joint refit (the input
 //         where the segment is in no relation), the relations the check after the refit dropped, and a
-//         status (failed only for bad options). Nothing is invented: a relation is kept only when making it
+//         status (failed, with the primitives untouched, only for bad options or, in a segment with a
+//         primitive, non-finite samples or weights, negative weights or weights not one per point). Nothing is invented: a relation is kept only when making it
 //         hold raises no segment's fit cost (sum of squared distances) by more than
 //         options.max_cost_increase of it, first predicted (detect_*_relations.h), then checked on the refit
 //         (at most twice that share: several relations add up); a segment that fails the check loses its
@@ -27,6 +28,7 @@
 #include "common/base/constants.h"
 #include "common/base/known_scale.h"
 #include "common/base/status.h"
+#include "common/fit/check_fit_input.h"
 #include "common/fit/fit_residuals.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_contacts.h"
@@ -150,6 +152,18 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
     return out;
   }
   const int count = int(std::min(fitted.size(), samples.size()));
+  // A sample at infinity would stretch the part's size and the segment's fit without bound (one rule for
+  // every fit's input: check_fit_input.h).
+  for (int s = 0; s < count; ++s) {
+    const SegmentSamples& ss = samples[std::size_t(s)];
+    if (!fitted[std::size_t(s)] || !primitive_is_valid(*fitted[std::size_t(s)]))
+      continue;
+    const Status input = check_fit_input(ss.points, Eigen::MatrixX3d(), ss.weights, 0);
+    if (!input) {
+      out.status = Status::failure("segment " + std::to_string(s) + "'s samples: " + input.error);
+      return out;
+    }
+  }
   std::vector<RelatedSegment> segments(static_cast<std::size_t>(count));
   std::vector<const Primitive*> start(std::size_t(count), nullptr);
   for (int s = 0; s < count; ++s) {

@@ -375,6 +375,33 @@ TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
   EXPECT_TRUE(none.relations.empty());
 }
 
+// Found by fuzz/fuzz_relate.cpp: a sample at -inf made the part's size unknown (taken as 1) and a coplanar
+// relation was kept 0.047 off after the refit. Such samples are refused, as every fit refuses them; a
+// free-form segment's samples are not read.
+TEST(Relations, RefusesNonFiniteSamples)
+{
+  const Scene scene = make_part(0.05);
+  std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  for (double bad : {-std::numeric_limits<double>::infinity(), std::nan("")}) {
+    std::vector<SegmentSamples> samples = samples_of(scene);
+    samples[Top].points(3, 0) = bad;
+    const RelatedPrimitives r = relate_primitives(fitted, samples, scene.contacts, 0.05, RelationOptions());
+    EXPECT_FALSE(r.status.ok());
+    EXPECT_NE(r.status.error.find("non-finite"), std::string::npos) << r.status.error;
+    EXPECT_TRUE(r.relations.empty());
+    for (std::size_t s = 0; s < fitted.size(); ++s)
+      EXPECT_TRUE(r.primitives[s].has_value() == fitted[s].has_value() &&
+                  (!fitted[s] || r.primitives[s]->origin == fitted[s]->origin));
+    samples[Top].points(3, 0) = 0;
+    samples[Boss].weights[0] = bad;
+    EXPECT_FALSE(relate_primitives(fitted, samples, scene.contacts, 0.05, RelationOptions()).status.ok());
+  }
+  std::vector<SegmentSamples> samples = samples_of(scene);
+  samples[Boss].points(0, 0) = std::nan("");
+  fitted[Boss].reset();
+  EXPECT_TRUE(relate_primitives(fitted, samples, scene.contacts, 0.05, RelationOptions()).status.ok());
+}
+
 // Found by fuzz/fuzz_relate.cpp: a contact naming no segment or one segment twice indexed out of bounds or
 // related a fillet to itself; a non-finite noise made every distance tolerance infinite.
 TEST(Relations, IgnoresBrokenContactsAndUnknownNoise)
