@@ -11,8 +11,8 @@
 //         roughness, counts per type, the fitted share of the area, the SnapReport and the time of each stage. With snap, the mesh's vertices
 //         lie on the primitives, the primitives are recorded on the mesh (segment_primitive_attribute.h) so
 //         that a later Snap Segment keeps sharp edges against them, and normals and bounding box are updated.
-//         A failed status, with the mesh untouched, when there are no segments or the tolerance is negative
-//         or not finite.
+//         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
+//         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
 //         relations), gather_segment_samples, fit_segments
 //         (all threads), relate_primitives (segment_contacts for the tangencies), snap_segments.
@@ -122,6 +122,10 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
     report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
     const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face, adjacency),
                                                         out.roughness, options.relation_options);
+    if (!related.status) {
+      out.status = Status::failure("relations: " + related.status.error);
+      return out;
+    }
     out.relations = related.relations;
     out.relations_dropped = related.dropped;
     for (int s = 0; s < count; ++s) {

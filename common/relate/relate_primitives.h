@@ -8,11 +8,12 @@
 // Output: RelatedPrimitives: the relations kept, each segment's primitive after the joint refit (the input
 //         where the segment is in no relation), the relations the check after the refit dropped, and a
 //         status (failed, with the primitives untouched, only for bad options or, in a segment with a
-//         primitive, non-finite samples or weights, negative weights or weights not one per point). Nothing is invented: a relation is kept only when making it
-//         hold raises no segment's fit cost (sum of squared distances) by more than
-//         options.max_cost_increase of it, first predicted (detect_*_relations.h), then checked on the refit
-//         (at most twice that share: several relations add up); a segment that fails the check loses its
-//         positional relations, then its directional ones, and the refit is run again.
+//         primitive, non-finite samples or weights, negative weights or weights not one per point).
+//         Nothing is invented: a relation is kept only when making it hold raises no segment's fit cost
+//         (sum of squared distances) by more than options.max_cost_increase of it, first predicted
+//         (detect_*_relations.h), then checked on the refit (at most twice that share: several relations add
+//         up); a segment that fails the check loses its positional relations, then its directional ones, and
+//         the refit is run again.
 // Method: 1. directions: parallel classes and the part's frame (detect_direction_relations.h), refit
 //            (refit_with_relations.h); 2. positions: coaxial, concentric, coplanar, equal radii, tangent
 //            fillets (detect_position_relations.h) among the refitted primitives, refit with all relations;

@@ -160,6 +160,11 @@ TYPED_TEST(SegmentFitSnapTest, FitAllRefusesBadInputAndLeavesTheMeshUntouched)
     EXPECT_EQ(r.status.error, "the fit tolerance must be 0 (automatic) or positive") << bad;
   }
   options.tolerance = 0;
+  options.relation_options.angle_deg = 95;
+  EXPECT_EQ(fit_all_segments(m, labels, options).status.error,
+            "relations: the relation angle must be between 0 and 90 degrees, the distance finite and the cost share "
+            "positive");
+  options.relation_options = RelationOptions();
   const std::vector<int> none(m.face.size(), -1);
   EXPECT_EQ(fit_all_segments(m, none, options).status.error, "the mesh has no segments");
   EXPECT_EQ(m.vert[0].cP(), first);
