@@ -153,24 +153,20 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
     return out;
   }
   const int count = int(std::min(fitted.size(), samples.size()));
-  // A sample at infinity would stretch the part's size and the segment's fit without bound (one rule for
-  // every fit's input: check_fit_input.h).
-  for (int s = 0; s < count; ++s) {
-    const SegmentSamples& ss = samples[std::size_t(s)];
-    if (!fitted[std::size_t(s)] || !primitive_is_valid(*fitted[std::size_t(s)]))
-      continue;
-    const Status input = check_fit_input(ss.points, Eigen::MatrixX3d(), ss.weights, 0);
-    if (!input) {
-      out.status = Status::failure("segment " + std::to_string(s) + "'s samples: " + input.error);
-      return out;
-    }
-  }
   std::vector<RelatedSegment> segments(static_cast<std::size_t>(count));
   std::vector<const Primitive*> start(std::size_t(count), nullptr);
   for (int s = 0; s < count; ++s) {
     const std::optional<Primitive>& p = fitted[std::size_t(s)];
     if (!p || !primitive_is_valid(*p) || samples[std::size_t(s)].points.rows() == 0)
       continue;
+    // A sample at infinity would stretch the part's size and the segment's fit without bound (one rule for
+    // every fit's input: check_fit_input.h). out.primitives is still the input.
+    const SegmentSamples& ss = samples[std::size_t(s)];
+    const Status input = check_fit_input(ss.points, Eigen::MatrixX3d(), ss.weights, 0);
+    if (!input) {
+      out.status = Status::failure("segment " + std::to_string(s) + "'s samples: " + input.error);
+      return out;
+    }
     segments[std::size_t(s)] = related_segment(*p, samples[std::size_t(s)], kRelateSamples);
     segments[std::size_t(s)].fixed = std::size_t(s) < fixed.size() && fixed[std::size_t(s)];
     if (segments[std::size_t(s)].weights.sum() > 0)
