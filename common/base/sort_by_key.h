@@ -13,6 +13,8 @@
 #ifndef PRIMITIVE_EDIT_SORT_BY_KEY_H
 #define PRIMITIVE_EDIT_SORT_BY_KEY_H
 
+#include "common/base/huge_page_vector.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -42,8 +44,8 @@ void sort_by_key(std::vector<int>& items, Key&& key)
 {
   using namespace sort_detail;
   const std::size_t n = items.size();
-  std::vector<std::uint64_t> bits(n), bits_out(n);
-  std::vector<int> items_out(n);
+  std::vector<std::uint64_t> bits = huge_page_vector<std::uint64_t>(n), bits_out = huge_page_vector<std::uint64_t>(n);
+  std::vector<int> items_out = huge_page_vector<int>(n);
   std::vector<std::array<std::size_t, std::size_t(1) << kDigitBits>> count(kDigitPasses);
   for (auto& c : count)
     c.fill(0);

@@ -11,6 +11,7 @@
 #ifndef PRIMITIVE_EDIT_FACE_ADJACENCY_H
 #define PRIMITIVE_EDIT_FACE_ADJACENCY_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/mesh/vertex_faces.h"
 
 #include <vcg/complex/complex.h>
@@ -36,7 +37,7 @@ std::vector<int> face_vertex_indices(const MeshType& m)
 {
   const std::size_t face_count = m.face.size();
   const std::size_t vertex_count = m.vert.size();
-  std::vector<int> fv(3 * face_count, -1);
+  std::vector<int> fv = huge_page_vector(3 * face_count, -1);
   for (std::size_t f = 0; f < face_count; ++f) {
     const auto& face = m.face[f];
     if (face.IsD())
@@ -78,8 +79,9 @@ FaceAdjacency build_face_adjacency(const MeshType& m)
   const std::vector<int>& vf = incident.face;
 
   FaceAdjacency adj;
-  adj.offset.resize(std::size_t(face_count) + 1);
+  assign_on_huge_pages(adj.offset, std::size_t(face_count) + 1, 0);
   adj.neighbour.reserve(3 * std::size_t(face_count));
+  advise_huge_pages(adj.neighbour.data(), 3 * std::size_t(face_count) * sizeof(int));
   for (int f = 0; f < face_count; ++f) {
     adj.offset[std::size_t(f)] = int(adj.neighbour.size());
     const int* corners = &fv[3 * std::size_t(f)];

@@ -8,6 +8,8 @@
 #ifndef PRIMITIVE_EDIT_FACE_CENTROIDS_AND_AREAS_H
 #define PRIMITIVE_EDIT_FACE_CENTROIDS_AND_AREAS_H
 
+#include "common/base/huge_page_vector.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vcg/complex/complex.h>
@@ -28,8 +30,8 @@ FaceCentroidsAndAreas face_centroids_and_areas(const MeshType& m)
 {
   const std::size_t n = m.face.size();
   FaceCentroidsAndAreas out;
-  out.centroid.assign(n, Eigen::Vector3d::Zero());
-  out.area.assign(n, 0.0);
+  assign_on_huge_pages(out.centroid, n, Eigen::Vector3d(Eigen::Vector3d::Zero()));
+  assign_on_huge_pages(out.area, n, 0.0);
   for (std::size_t f = 0; f < n; ++f) {
     const auto& face = m.face[f];
     if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)

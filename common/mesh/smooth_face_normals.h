@@ -15,6 +15,7 @@
 #define PRIMITIVE_EDIT_SMOOTH_FACE_NORMALS_H
 
 #include "common/base/constants.h"
+#include "common/base/huge_page_vector.h"
 #include "common/base/parallel_for.h"
 #include "common/mesh/face_adjacency.h"
 
@@ -32,8 +33,8 @@ std::vector<Eigen::Vector3d> smooth_face_normals(const MeshType& m, const FaceAd
                                                  double crease_angle_deg = 180.0, int threads = 0)
 {
   const std::size_t face_count = m.face.size();
-  std::vector<Eigen::Vector3d> normal(face_count, Eigen::Vector3d::Zero());
-  std::vector<double> area(face_count, 0.0);
+  std::vector<Eigen::Vector3d> normal = huge_page_vector(face_count, Eigen::Vector3d(Eigen::Vector3d::Zero()));
+  std::vector<double> area = huge_page_vector(face_count, 0.0);
   for (std::size_t f = 0; f < face_count; ++f) {
     const auto& face = m.face[f];
     if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)
@@ -53,7 +54,7 @@ std::vector<Eigen::Vector3d> smooth_face_normals(const MeshType& m, const FaceAd
 
   const bool gated = crease_angle_deg < 180.0;
   const double min_cos = std::cos(radians_from_degrees(crease_angle_deg));
-  std::vector<Eigen::Vector3d> next(face_count);
+  std::vector<Eigen::Vector3d> next = huge_page_vector<Eigen::Vector3d>(face_count);
   // Below this many faces a second thread costs more than it saves.
   constexpr std::size_t kFacesPerThread = 20000;
   for (int pass = 0; pass < iterations; ++pass) {

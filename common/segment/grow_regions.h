@@ -19,6 +19,7 @@
 #ifndef PRIMITIVE_EDIT_GROW_REGIONS_H
 #define PRIMITIVE_EDIT_GROW_REGIONS_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/base/progress.h"
 #include "common/base/sort_by_key.h"
 #include "common/segment/fit_region_primitive.h"
@@ -194,11 +195,11 @@ inline GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& a
   using namespace grow_detail;
   const std::size_t face_count = g.valid.size();
   GrowingRegions out;
-  out.label.assign(face_count, -1);
+  assign_on_huge_pages(out.label, face_count, -1);
   std::vector<int>& label = out.label;
-  std::vector<char> failed(face_count, 0); // faces no seed should be tried from
+  std::vector<char> failed = huge_page_vector(face_count, char(0)); // faces no seed should be tried from
   FaceStamps stamps;
-  stamps.stamp.assign(face_count, 0);
+  assign_on_huge_pages(stamps.stamp, face_count, 0);
   const std::vector<int> order = scale.tolerance > 0 ? seed_order(g, adj) : std::vector<int>();
   std::vector<int> patch, region, queue, band;
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };

@@ -23,6 +23,7 @@
 #define PRIMITIVE_EDIT_GROWING_FACES_H
 
 #include "common/base/constants.h"
+#include "common/base/huge_page_vector.h"
 #include "common/base/primitive.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/mesh/face_adjacency.h"
@@ -57,7 +58,7 @@ GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoo
   FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
   g.centroid = std::move(faces.centroid);
   g.area = std::move(faces.area);
-  g.valid.assign(n, 0);
+  assign_on_huge_pages(g.valid, n, char(0));
   for (std::size_t f = 0; f < n; ++f) {
     if (g.normal[f].isZero(0.0)) {
       g.centroid[f].setZero();

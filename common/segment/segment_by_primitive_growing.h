@@ -65,6 +65,7 @@
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
 #include "common/base/constants.h"
+#include "common/base/huge_page_vector.h"
 #include "common/base/known_scale.h"
 #include "common/base/primitive.h"
 #include "common/base/progress.h"
@@ -235,7 +236,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("dissolve");
 
   report_progress(progress, 80, "Assigning the faces between regions");
-  std::vector<char> deleted(std::size_t(face_count), 0);
+  std::vector<char> deleted = huge_page_vector(std::size_t(face_count), char(0));
   for (int f = 0; f < face_count; ++f)
     deleted[std::size_t(f)] = m.face[std::size_t(f)].IsD() ? 1 : 0;
   std::vector<int>& label = regions.label;
