@@ -3,11 +3,12 @@
 // Input:  a size n and a value (or none: default-inserted elements), or an existing vector to refill.
 // Output: a std::vector<T> of n elements, as std::vector(n, value) or v.assign(n, value) gives, whose buffer
 //         was advised to the kernel as huge-page memory (Linux madvise(MADV_HUGEPAGE)) before it was written.
-// Why:    a filter call allocates its large arrays afresh and glibc returns them to the system when they are
-//         freed, so each call faults them in again, 4 KiB at a time; on a virtual machine a fault costs about
-//         14 us, a quarter of a million-face segmentation (bench/README.md, Scan segmentation). Transparent
-//         huge pages in "madvise" mode (a common kernel default) serve a 2 MiB run with one fault. Elsewhere
-//         (THP "always" or "never", other systems) the advice changes nothing; it is never an error.
+// Why:    a first call in a process (meshlabserver's every call), or any call on arrays past glibc's 32 MB
+//         mmap ceiling, faults its arrays in 4 KiB at a time, about 15 us a fault on a virtual machine.
+//         Transparent huge pages in "madvise" mode (a common kernel default) serve a 2 MiB run with one
+//         fault: the peer part's segmentation through meshlabserver 1.17 -> 0.94 s (bench/README.md, Scan
+//         segmentation). Elsewhere (THP "always" or "never", other systems) the advice changes nothing; it is
+//         never an error.
 // Method: reserve, advise the 2 MiB-aligned part of the reserved bytes, then fill; arrays under 4 MiB (which
 //         may hold no aligned 2 MiB run) are left as they are. The type stays std::vector<T>.
 // Cost:   that of the fill, plus one madvise system call per large array.
