@@ -41,15 +41,23 @@ inline void advise_huge_pages(const void* data, std::size_t bytes)
 #endif
 }
 
-// v becomes n copies of value; its buffer is replaced by an advised one when it must grow.
+// v can take n elements without reallocating; a buffer it must replace for that is advised. Its contents
+// stay only when no new buffer was needed (callers fill it next).
+template <class T>
+void reserve_on_huge_pages(std::vector<T>& v, std::size_t n)
+{
+  if (v.capacity() >= n)
+    return;
+  std::vector<T>().swap(v);
+  v.reserve(n);
+  advise_huge_pages(v.data(), n * sizeof(T));
+}
+
+// v becomes n copies of value.
 template <class T>
 void assign_on_huge_pages(std::vector<T>& v, std::size_t n, const T& value)
 {
-  if (v.capacity() < n) {
-    std::vector<T>().swap(v);
-    v.reserve(n);
-    advise_huge_pages(v.data(), n * sizeof(T));
-  }
+  reserve_on_huge_pages(v, n);
   v.assign(n, value);
 }
 
@@ -66,8 +74,7 @@ template <class T>
 std::vector<T> huge_page_vector(std::size_t n)
 {
   std::vector<T> v;
-  v.reserve(n);
-  advise_huge_pages(v.data(), n * sizeof(T));
+  reserve_on_huge_pages(v, n);
   v.resize(n);
   return v;
 }

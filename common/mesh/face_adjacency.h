@@ -80,8 +80,7 @@ FaceAdjacency build_face_adjacency(const MeshType& m)
 
   FaceAdjacency adj;
   assign_on_huge_pages(adj.offset, std::size_t(face_count) + 1, 0);
-  adj.neighbour.reserve(3 * std::size_t(face_count));
-  advise_huge_pages(adj.neighbour.data(), 3 * std::size_t(face_count) * sizeof(int));
+  reserve_on_huge_pages(adj.neighbour, 3 * std::size_t(face_count));
   for (int f = 0; f < face_count; ++f) {
     adj.offset[std::size_t(f)] = int(adj.neighbour.size());
     const int* corners = &fv[3 * std::size_t(f)];

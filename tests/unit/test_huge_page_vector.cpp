@@ -38,6 +38,17 @@ TEST(HugePageVector, RefillKeepsABufferLargeEnough)
   EXPECT_EQ(v, std::vector<int>(kFourMiBOfDoubles, 1));
 }
 
+TEST(HugePageVector, ReserveKeepsContentsOnlyWhenTheBufferSuffices)
+{
+  std::vector<int> v = {4, 5, 6};
+  v.reserve(10);
+  reserve_on_huge_pages(v, 8);
+  EXPECT_EQ(v, std::vector<int>({4, 5, 6}));
+  reserve_on_huge_pages(v, 2 * kFourMiBOfDoubles);
+  EXPECT_TRUE(v.empty());
+  EXPECT_GE(v.capacity(), 2 * kFourMiBOfDoubles);
+}
+
 // The VmFlags of the mapping that holds address, or "" when /proc/self/smaps is not readable.
 std::string mapping_flags(const void* address)
 {
