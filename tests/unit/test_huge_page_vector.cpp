@@ -49,6 +49,24 @@ TEST(HugePageVector, ReserveKeepsContentsOnlyWhenTheBufferSuffices)
   EXPECT_GE(v.capacity(), 2 * kFourMiBOfDoubles);
 }
 
+TEST(HugePageVector, CapacityFillsWholeHugePagesLessMallocOverhead)
+{
+  constexpr std::size_t kHuge = kHugePageBytes, kOverhead = 32;
+  for (const std::size_t size : {std::size_t(1), std::size_t(4), std::size_t(8), std::size_t(24)})
+    for (const std::size_t n : {std::size_t(0), std::size_t(1000), kHuge / size - 1, kHuge / size, std::size_t(1000000),
+                                3 * kHuge / size + 7}) {
+      const std::size_t capacity = huge_page_capacity(n, size);
+      if (n * size < kHuge) {
+        EXPECT_EQ(capacity, n) << n << " x " << size;
+        continue;
+      }
+      const std::size_t whole_pages = (n * size + kOverhead + kHuge - 1) / kHuge * kHuge;
+      EXPECT_GE(capacity, n) << n << " x " << size;
+      EXPECT_LE(capacity * size + kOverhead, whole_pages) << n << " x " << size;
+      EXPECT_GT(capacity * size + kOverhead + size, whole_pages) << n << " x " << size;
+    }
+}
+
 // The VmFlags of the mapping that holds address, or "" when /proc/self/smaps is not readable.
 std::string mapping_flags(const void* address)
 {
