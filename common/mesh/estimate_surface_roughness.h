@@ -30,6 +30,7 @@
 #ifndef PRIMITIVE_EDIT_ESTIMATE_SURFACE_ROUGHNESS_H
 #define PRIMITIVE_EDIT_ESTIMATE_SURFACE_ROUGHNESS_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/base/parallel_for.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/face_centroids_and_areas.h"
@@ -122,6 +123,23 @@ inline std::pair<double, double> patch_rms(const std::vector<Eigen::Vector3d>& c
   return {plane, q >= 0 && std::isfinite(q) ? q : none};
 }
 
+// The usable faces (area > 0) of ranks (i * usable) / count, i = 0 .. count - 1, among the `usable` ones in
+// index order: count faces spread evenly over the index range, found without listing every usable face.
+inline std::vector<int> evenly_spread_faces(const std::vector<double>& area, std::size_t usable, std::size_t count)
+{
+  std::vector<int> faces;
+  faces.reserve(count);
+  std::size_t rank = 0;
+  for (std::size_t f = 0; f < area.size() && faces.size() < count; ++f) {
+    if (!(area[f] > 0))
+      continue;
+    if (rank == (faces.size() * usable) / count)
+      faces.push_back(int(f));
+    ++rank;
+  }
+  return faces;
+}
+
 } // namespace roughness_detail
 
 inline SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vector3d>& centroid,
@@ -132,22 +150,19 @@ inline SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vecto
   const std::size_t n = centroid.size();
   if (area.size() != n || adj.face_count() != int(n) || n == 0)
     return out;
-  std::vector<int> usable_faces;
-  for (std::size_t f = 0; f < n; ++f)
-    if (area[f] > 0)
-      usable_faces.push_back(int(f));
+  const std::size_t usable = std::size_t(std::count_if(area.begin(), area.end(), [](double a) { return a > 0; }));
   if (patch_faces <= 0)
-    patch_faces = std::max(60, int(usable_faces.size() / 200));
+    patch_faces = std::max(60, int(usable / 200));
 
   // Each patch is measured alone and its figures kept at its own index, so the quantiles below see the same
   // values in the same order whatever the threads.
-  const std::size_t seeds = std::min<std::size_t>(400, usable_faces.size());
-  std::vector<std::pair<double, double>> rms(seeds, {std::nan(""), std::nan("")});
-  parallel_for(seeds, threads, 50, [&](std::size_t begin, std::size_t end) {
-    std::vector<int> stamp(n, -1), patch;
+  const std::vector<int> seeds =
+      roughness_detail::evenly_spread_faces(area, usable, std::min<std::size_t>(400, usable));
+  std::vector<std::pair<double, double>> rms(seeds.size(), {std::nan(""), std::nan("")});
+  parallel_for(seeds.size(), threads, 50, [&](std::size_t begin, std::size_t end) {
+    std::vector<int> stamp = huge_page_vector(n, -1), patch; // advised: a first call faults it in by 2 MiB
     for (std::size_t i = begin; i < end; ++i) {
-      roughness_detail::grow_patch(adj, area, usable_faces[(i * usable_faces.size()) / seeds], int(i), patch_faces,
-                                   stamp, patch);
+      roughness_detail::grow_patch(adj, area, seeds[i], int(i), patch_faces, stamp, patch);
       if (int(patch.size()) >= std::max(3, patch_faces / 2))
         rms[i] = roughness_detail::patch_rms(centroid, area, patch);
     }

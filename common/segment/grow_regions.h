@@ -86,8 +86,9 @@ void bfs_patch(const FaceAdjacency& adj, const std::vector<int>& starts, std::si
 inline std::vector<int> seed_order(const GrowingFaces& g, const FaceAdjacency& adj)
 {
   const std::size_t n = g.valid.size();
-  std::vector<double> variation(n, std::numeric_limits<double>::infinity());
+  std::vector<double> variation = huge_page_vector(n, std::numeric_limits<double>::infinity());
   std::vector<int> order;
+  reserve_on_huge_pages(order, n);
   for (std::size_t f = 0; f < n; ++f) {
     if (!g.valid[f])
       continue;

@@ -192,7 +192,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
 {
   using namespace grow_detail;
   const int face_count = int(m.face.size());
-  segment_of_face.assign(std::size_t(face_count), -1);
+  assign_on_huge_pages(segment_of_face, std::size_t(face_count), -1);
   if (report)
     *report = SegmentByPrimitiveGrowingReport();
   if (adj.face_count() != face_count || face_count == 0)
