@@ -13,7 +13,7 @@
 //         sampled_share    the share (by area) of at most kShareSampleCount evenly strided faces that agree;
 //                          agreeing_share_reaches, whether that share over all of them reaches a threshold;
 //         face_samples     the centroids, normals and areas of at most max_count evenly strided faces, as
-//                          fits take them;
+//                          fits take them (of one list, or of two as if joined);
 //         face_cost        how badly a primitive explains a face: the centroid's distance plus up to one
 //                          tolerance for a normal that disagrees (the order in which leftover faces are
 //                          handed out, and the border relaxation's measure);
@@ -69,20 +69,29 @@ GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoo
   return g;
 }
 
-inline void face_samples(const GrowingFaces& g, const std::vector<int>& faces, int max_count,
-                         Eigen::MatrixX3d& points, Eigen::MatrixX3d& normals, Eigen::VectorXd& weights)
+// The samples of `first` followed by `second`, taken as from the two lists joined, without joining them: a
+// merge test of two regions of a million faces each would otherwise copy both.
+inline void face_samples(const GrowingFaces& g, const std::vector<int>& first, const std::vector<int>& second,
+                         int max_count, Eigen::MatrixX3d& points, Eigen::MatrixX3d& normals, Eigen::VectorXd& weights)
 {
-  const std::size_t n = faces.size();
+  const std::size_t n = first.size() + second.size();
   const std::size_t count = std::min(n, std::size_t(std::max(1, max_count)));
   points.resize(Eigen::Index(count), 3);
   normals.resize(Eigen::Index(count), 3);
   weights.resize(Eigen::Index(count));
   for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t f = std::size_t(faces[count == n ? i : (i * n) / count]);
+    const std::size_t j = count == n ? i : (i * n) / count;
+    const std::size_t f = std::size_t(j < first.size() ? first[j] : second[j - first.size()]);
     points.row(Eigen::Index(i)) = g.centroid[f].transpose();
     normals.row(Eigen::Index(i)) = g.normal[f].transpose();
     weights[Eigen::Index(i)] = g.area[f];
   }
+}
+
+inline void face_samples(const GrowingFaces& g, const std::vector<int>& faces, int max_count,
+                         Eigen::MatrixX3d& points, Eigen::MatrixX3d& normals, Eigen::VectorXd& weights)
+{
+  face_samples(g, faces, {}, max_count, points, normals, weights);
 }
 
 // The cosines of the angle bounds are computed once per loop: a normal within the angle agrees

@@ -18,7 +18,8 @@
 //         merged in border order; a pair whose region a merge of its window changed is tested again, so the
 //         merges are those of testing one pair after the other on any thread count.
 // Cost:   O(E log E) for the borders; per round O(region adjacencies * (kFitSampleCount + kShareSampleCount)),
-//         divided by the threads but for the pairs tested again.
+//         divided by the threads but for the pairs tested again; a test reads the two regions' faces in place,
+//         and only a merge appends one region's faces to the other's.
 #ifndef PRIMITIVE_EDIT_MERGE_REGIONS_H
 #define PRIMITIVE_EDIT_MERGE_REGIONS_H
 
@@ -43,12 +44,12 @@ constexpr std::size_t kMergeWindowPerThread = 4;
 
 inline std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vector<int>& fa, const Primitive& pa,
                                                  const std::vector<int>& fb, const Primitive& pb,
-                                                 const std::vector<int>& both, const GrowingScale& scale)
+                                                 const GrowingScale& scale)
 {
   const double tol = scale.tolerance, angle = scale.angle;
   Eigen::MatrixX3d points, normals;
   Eigen::VectorXd weights;
-  face_samples(g, both, kFitSampleCount, points, normals, weights);
+  face_samples(g, fa, fb, kFitSampleCount, points, normals, weights);
   if (points.rows() < 3)
     return std::nullopt;
   std::optional<Primitive> best;
@@ -130,17 +131,9 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
     return ab.first != ab.second && (round == 1 || merged_in[std::size_t(ab.first)] == round - 1 ||
                                      merged_in[std::size_t(ab.second)] == round - 1);
   };
-  // The union's faces: a's, then b's (the order a merged region keeps, which its later samples stride over).
-  auto join = [&](std::pair<int, int> ab, std::vector<int>& both) {
-    const std::vector<int>& fb = regions.faces[std::size_t(ab.second)];
-    both = regions.faces[std::size_t(ab.first)];
-    both.insert(both.end(), fb.begin(), fb.end());
-  };
-  auto test = [&](std::pair<int, int> ab, std::vector<int>& both) {
-    join(ab, both);
+  auto test = [&](std::pair<int, int> ab) {
     return merged_primitive(g, regions.faces[std::size_t(ab.first)], regions.primitive[std::size_t(ab.first)],
-                            regions.faces[std::size_t(ab.second)], regions.primitive[std::size_t(ab.second)], both,
-                            scale);
+                            regions.faces[std::size_t(ab.second)], regions.primitive[std::size_t(ab.second)], scale);
   };
   // One thread tests one pair at a time; more take a window of pairs (see Method above).
   const std::size_t lanes = std::size_t(resolve_thread_count(threads));
@@ -148,7 +141,6 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
   std::vector<std::size_t> window;
   std::vector<std::pair<int, int>> pair_of(window_size);
   std::vector<std::optional<Primitive>> joint(window_size);
-  std::vector<std::vector<int>> both(lanes); // each thread's union of a pair's faces, kept to spare allocations
   std::vector<int> changed_in_window(static_cast<std::size_t>(count), -1);
   int total = 0, windows = 0;
   for (int round = 1, merges = 1; merges > 0; ++round) {
@@ -163,10 +155,10 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
         }
       }
       std::atomic<std::size_t> taken{0};
-      // As many ranges as threads, one index each: the index names the thread's buffer.
-      parallel_for(std::min(lanes, window.size()), int(lanes), 1, [&](std::size_t lane, std::size_t) {
+      // As many ranges as threads, one index each.
+      parallel_for(std::min(lanes, window.size()), int(lanes), 1, [&](std::size_t, std::size_t) {
         for (std::size_t i; (i = taken++) < window.size();)
-          joint[i] = test(pair_of[i], both[lane]);
+          joint[i] = test(pair_of[i]);
       });
       ++windows;
       for (std::size_t i = 0; i < window.size(); ++i) {
@@ -176,15 +168,20 @@ inline int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const 
         const auto [a, b] = ab;
         const bool fresh = ab == pair_of[i] && changed_in_window[std::size_t(a)] != windows &&
                            changed_in_window[std::size_t(b)] != windows;
-        const std::optional<Primitive> merged = fresh ? joint[i] : test(ab, both[0]);
+        const std::optional<Primitive> merged = fresh ? joint[i] : test(ab);
         if (!merged)
           continue;
         const int keep = std::min(a, b), gone = std::max(a, b);
         parent[std::size_t(gone)] = keep;
         regions.primitive[std::size_t(keep)] = *merged;
-        join(ab, both[0]);
-        regions.faces[std::size_t(keep)].swap(both[0]);
-        std::vector<int>().swap(regions.faces[std::size_t(gone)]);
+        // The union's faces: a's, then b's (the order the test sampled, which later samples stride over too),
+        // appended in place.
+        std::vector<int>& fa = regions.faces[std::size_t(a)];
+        std::vector<int>& fb = regions.faces[std::size_t(b)];
+        fa.insert(fa.end(), fb.begin(), fb.end());
+        std::vector<int>().swap(fb);
+        if (keep != a)
+          fa.swap(fb);
         merged_in[std::size_t(keep)] = round;
         changed_in_window[std::size_t(keep)] = windows;
         ++merges;
