@@ -8,10 +8,11 @@
 //         with the smallest face_cost, if smaller than its own. Growth within the tolerance lets a region
 //         take the tangent start of the next surface (a plane the start of a fillet); the scan's ground truth
 //         is the nearest surface.
-// Cost:   O(F) per pass.
+// Cost:   O(F) for the first pass; later passes look only at the faces next to a move (and skim a byte per face).
 #ifndef PRIMITIVE_EDIT_RELAX_REGION_BORDERS_H
 #define PRIMITIVE_EDIT_RELAX_REGION_BORDERS_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/segment/growing_faces.h"
 
 #include <vector>
@@ -26,10 +27,16 @@ inline int relax_region_borders(const GrowingFaces& g, const FaceAdjacency& adj,
   const int face_count = int(label.size());
   const int regions = int(primitive_of_region.size());
   auto cost = [&](int f, int r) { return face_cost(g, primitive_of_region[std::size_t(r)], f, tol); };
+  // A face whose label and neighbours' labels are those it last stayed with would stay again: only faces
+  // with a change in their 1-ring since are looked at, which gives the moves of looking at every face.
+  std::vector<char> changed = huge_page_vector(std::size_t(face_count), char(1));
   int total = 0;
   for (int pass = 0; pass < kRelaxPasses; ++pass) {
     int moved = 0;
     for (int f = 0; f < face_count; ++f) {
+      if (!changed[std::size_t(f)])
+        continue;
+      changed[std::size_t(f)] = 0;
       const int own = label[std::size_t(f)];
       if (own < 0 || own >= regions || !g.valid[std::size_t(f)])
         continue;
@@ -49,6 +56,9 @@ inline int relax_region_borders(const GrowingFaces& g, const FaceAdjacency& adj,
       }
       if (best != own) {
         label[std::size_t(f)] = best;
+        changed[std::size_t(f)] = 1;
+        for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k)
+          changed[std::size_t(adj.neighbour[std::size_t(k)])] = 1;
         ++moved;
       }
     }

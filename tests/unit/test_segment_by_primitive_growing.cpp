@@ -6,6 +6,7 @@
 #include "test_mesh.h"
 
 #include "common/mesh/face_adjacency.h"
+#include "common/segment/relax_region_borders.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
 #include "meshlab_test_mesh.h"
@@ -510,6 +511,69 @@ TEST(AgreeingShareReaches, SameVerdictAsTheFullShare)
   }
   EXPECT_TRUE(agreeing_share_reaches(g, plane, {}, 0.01, 0.1, 0.0));
   EXPECT_FALSE(agreeing_share_reaches(g, plane, {}, 0.01, 0.1, 0.5));
+}
+
+// The border relaxation looks again only at faces next to a move; it must move what a pass over every face
+// moves (the rule it replaced, written out here), pass for pass.
+int relax_looking_at_every_face(const GrowingFaces& g, const FaceAdjacency& adj, const std::vector<Primitive>& prim,
+                                double tol, std::vector<int>& label)
+{
+  const int regions = int(prim.size());
+  int total = 0;
+  for (int pass = 0; pass < kRelaxPasses; ++pass) {
+    int moved = 0;
+    for (int f = 0; f < int(label.size()); ++f) {
+      const int own = label[std::size_t(f)];
+      if (own < 0 || own >= regions || !g.valid[std::size_t(f)])
+        continue;
+      int best = own;
+      double best_cost = -1;
+      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
+        const int r = label[std::size_t(adj.neighbour[std::size_t(k)])];
+        if (r < 0 || r >= regions || r == best)
+          continue;
+        if (best_cost < 0)
+          best_cost = face_cost(g, prim[std::size_t(own)], f, tol);
+        const double c = face_cost(g, prim[std::size_t(r)], f, tol);
+        if (c < best_cost) {
+          best = r;
+          best_cost = c;
+        }
+      }
+      if (best != own) {
+        label[std::size_t(f)] = best;
+        ++moved;
+      }
+    }
+    total += moved;
+    if (moved == 0)
+      break;
+  }
+  return total;
+}
+
+TEST(RelaxRegionBorders, MovesWhatAPassOverEveryFaceMoves)
+{
+  test_mesh::TMesh m;
+  vcg::tri::Sphere(m, 4);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  const GrowingFaces g = growing_faces(m, adj, 0);
+  const std::vector<Primitive> prim = {
+      test_fit::make_plane(Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d::UnitZ()),
+      test_fit::make_plane(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX()),
+      test_fit::make_sphere(Eigen::Vector3d::Zero(), 1.0)};
+  std::mt19937 random(3);
+  std::uniform_int_distribution<int> pick(-1, 3); // -1: no region; 3: a component beyond the regions
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<int> label(m.face.size());
+    for (int& l : label)
+      l = pick(random);
+    std::vector<int> expected = label;
+    const int expected_moves = relax_looking_at_every_face(g, adj, prim, 0.1, expected);
+    ASSERT_GT(expected_moves, int(label.size()) / 10) << "a trial that moves little tests little";
+    EXPECT_EQ(relax_region_borders(g, adj, prim, 0.1, label), expected_moves) << "trial " << trial;
+    EXPECT_EQ(label, expected) << "trial " << trial;
+  }
 }
 
 } // namespace
