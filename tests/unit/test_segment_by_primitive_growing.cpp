@@ -513,8 +513,8 @@ TEST(AgreeingShareReaches, SameVerdictAsTheFullShare)
   EXPECT_FALSE(agreeing_share_reaches(g, plane, {}, 0.01, 0.1, 0.5));
 }
 
-// The border relaxation looks again only at faces next to a move; it must move what a pass over every face
-// moves (the rule it replaced, written out here), pass for pass.
+// The border relaxation looks again only at faces next to a move; it must end with the labels and the move count
+// of passes over every face (the rule it replaced, written out here).
 int relax_looking_at_every_face(const GrowingFaces& g, const FaceAdjacency& adj, const std::vector<Primitive>& prim,
                                 double tol, std::vector<int>& label)
 {
