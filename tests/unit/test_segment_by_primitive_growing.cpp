@@ -514,33 +514,16 @@ TEST(AgreeingShareReaches, SameVerdictAsTheFullShare)
 }
 
 // The border relaxation looks again only at faces next to a move; it must end with the labels and the move count
-// of passes over every face (the rule it replaced, written out here).
+// of passes over every face (the rule it replaced, written out here with the same choice per face).
 int relax_looking_at_every_face(const GrowingFaces& g, const FaceAdjacency& adj, const std::vector<Primitive>& prim,
                                 double tol, std::vector<int>& label)
 {
-  const int regions = int(prim.size());
   int total = 0;
   for (int pass = 0; pass < kRelaxPasses; ++pass) {
     int moved = 0;
     for (int f = 0; f < int(label.size()); ++f) {
-      const int own = label[std::size_t(f)];
-      if (own < 0 || own >= regions || !g.valid[std::size_t(f)])
-        continue;
-      int best = own;
-      double best_cost = -1;
-      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
-        const int r = label[std::size_t(adj.neighbour[std::size_t(k)])];
-        if (r < 0 || r >= regions || r == best)
-          continue;
-        if (best_cost < 0)
-          best_cost = face_cost(g, prim[std::size_t(own)], f, tol);
-        const double c = face_cost(g, prim[std::size_t(r)], f, tol);
-        if (c < best_cost) {
-          best = r;
-          best_cost = c;
-        }
-      }
-      if (best != own) {
+      const int best = best_region_for_face(g, adj, prim, tol, label, f);
+      if (best != label[std::size_t(f)]) {
         label[std::size_t(f)] = best;
         ++moved;
       }
