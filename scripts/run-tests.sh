@@ -22,12 +22,12 @@ scripts/setup-meshlab-2025.sh
 stage "MeshLab 2020.09: build and test"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPRIMITIVE_EDIT_MESHLAB=2020.09 -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure
+ctest --test-dir build --output-on-failure -j"$jobs"
 
 stage "MeshLab 2025.07: build and test"
 cmake -S . -B build-2025 -DCMAKE_BUILD_TYPE=Release -DPRIMITIVE_EDIT_MESHLAB=2025.07 -DPRIMITIVE_EDIT_BUILD_BENCH=OFF
 cmake --build build-2025 -j"$jobs"
-ctest --test-dir build-2025 --output-on-failure
+ctest --test-dir build-2025 --output-on-failure -j"$jobs"
 
 # The plugins run inside uninstrumented MeshLabs: sanitizers cover common/ through the unit tests. Debug with
 # its flags set to -O1 -g1: asserts (Eigen's index checks among them) stay on, and an empty build type would be
