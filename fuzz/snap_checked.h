@@ -6,7 +6,7 @@
 //         tool's Apply: snap_onto_primitive; the others keep what the mesh's attribute holds).
 // Checks: no vertex becomes non-finite and a non-finite one is left as it was; vertices on no snapped segment
 //         stay where they are unless the fold repair slid them; flip prevention leaves no fold, and without it
-//         nothing is repaired or held back; the report is finite; the edit tool's target keeps its primitive.
+//         nothing is repaired or held back; only vertices held back come part of the way; the report is finite; the edit tool's target keeps its primitive.
 #ifndef PRIMITIVE_EDIT_FUZZ_SNAP_CHECKED_H
 #define PRIMITIVE_EDIT_FUZZ_SNAP_CHECKED_H
 
@@ -54,6 +54,7 @@ void snap_checked(MeshType& m, const std::vector<int>& seg, const std::vector<st
     if (!on_snapped[v] && report.repaired_vertices == 0)
       FUZZ_CHECK(std::memcmp(&p, &before[v], sizeof p) == 0);
   }
+  FUZZ_CHECK(report.partway_vertices >= 0 && report.partway_vertices <= report.reverted_vertices);
   if (options.prevent_flips)
     FUZZ_CHECK(report.folded_faces == 0);
   else

@@ -315,7 +315,8 @@ TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
 }
 
 // A triangle whose inner vertex would be projected across the opposite edge: snapping it would flip
-// the face, so it stays where it was.
+// the face, and so would the mean of its two neighbours (on that edge), so it goes back to where it was, then
+// as far towards the sphere as the face allows: 3/8 of the way (the edge x + y = 1 is crossed at 0.49).
 TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
 {
   using M = TypeParam;
@@ -341,8 +342,11 @@ TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
   const SnapReport report = snap_segments(m, s.labels, {ball});
   EXPECT_GT(face_normal(m, 0).dot(before), 0);
   EXPECT_EQ(report.reverted_vertices, 1);
-  EXPECT_EQ(report.moved_vertices, 2);
-  EXPECT_EQ(eig(m.vert[2].cP()), inner);
+  EXPECT_EQ(report.partway_vertices, 1);
+  EXPECT_EQ(report.moved_vertices, 3);
+  EXPECT_EQ(report.folded_faces, 0);
+  const Eigen::Vector3d partway = inner + 3.0 / 8.0 * (closest_point_on_primitive(ball, inner) - inner);
+  EXPECT_LT((eig(m.vert[2].cP()) - partway).norm(), tolerance<M>(1.0));
 }
 
 // The same inner vertex with a third neighbour below: its projection still flips a face, but the mean of its
@@ -585,6 +589,13 @@ TEST(DescribeSnapReport, GivesTheBorderShareOnlyWhenThereIsABorder)
                                           0),
             0u)
       << describe_snap_report(r);
+  EXPECT_EQ(describe_snap_report(r).find("part of the way"), std::string::npos) << describe_snap_report(r);
+  r.reverted_vertices = 4;
+  r.partway_vertices = 3;
+  EXPECT_NE(describe_snap_report(r).find("4 held back where that was not enough, 3 of them part of the way), mean"),
+            std::string::npos)
+      << describe_snap_report(r);
+  r.reverted_vertices = r.partway_vertices = 0;
   r.edge_vertices = r.corner_vertices = r.border_vertices = 0;
   r.folded_faces = 3;
   r.folded_area = 0.5;
