@@ -15,12 +15,15 @@
 // --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
 // with that type (fit_primitive, all points) instead of letting fit_primitive_auto choose: the ceiling with the
 // true types.
+// --primitives PRIMS.txt (lines "SEGMENT_ID TYPE ORIGIN(3) AXIS(3) RADIUS MINOR_RADIUS HALF_ANGLE", e.g. from
+// true_segmentation.py --primitives) snaps onto those primitives instead of fitting: with --labels, the snap alone
+// on the true segments and the true primitives (what the fits are measured against).
 // --method 0|1|2 starts the fits of given types as FitMethod says (0 refined starts, 1 the paper's direct fit,
 // 2 direct then refined; fit_result.h): with --labels and --types, the direct fit on the true segments.
 // --repair 0 holds folded faces back without first sliding vertices along their surfaces (SnapOptions::repair_folds);
 // --prevent-flips 0 leaves folds as they are (their area is printed either way).
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
-//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
+//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
 #include "common/pipeline/fit_all_segments.h"
@@ -78,10 +81,23 @@ bool read_labels(const std::string& path, const bracket::BMesh& scan, std::vecto
   return true;
 }
 
-// Reads "SEGMENT_ID TYPE" lines (type: plane, sphere, cylinder, cone, torus; any other word, e.g. other,
-// leaves the segment to fit_primitive_auto; '#' lines are comments); ids outside the segments are ignored.
-bool read_types(const std::string& path, std::vector<std::optional<primitive_edit::PrimitiveType>>& type_of_segment,
-                std::string& message)
+// The type whose lower-case name is `name` (plane, sphere, cylinder, cone, torus), or nothing.
+std::optional<primitive_edit::PrimitiveType> type_named(const std::string& name)
+{
+  for (int t = 0; t < primitive_edit::kPrimitiveTypeCount; ++t) {
+    const auto type = static_cast<primitive_edit::PrimitiveType>(t);
+    std::string type_name = primitive_edit::primitive_type_name(type);
+    std::transform(type_name.begin(), type_name.end(), type_name.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (type_name == name)
+      return type;
+  }
+  return std::nullopt;
+}
+
+// Calls read_line(line) on each line of `path` but empty and '#' ones, until it returns false (having set
+// `message`); false when the file cannot be read or a line was refused.
+template <class ReadLine>
+bool read_lines(const std::string& path, std::string& message, ReadLine read_line)
 {
   std::ifstream in(path);
   if (!in) {
@@ -89,9 +105,18 @@ bool read_types(const std::string& path, std::vector<std::optional<primitive_edi
     return false;
   }
   std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#')
-      continue;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#' && !read_line(line))
+      return false;
+  return true;
+}
+
+// Reads "SEGMENT_ID TYPE" lines (type: plane, sphere, cylinder, cone, torus; any other word, e.g. other,
+// leaves the segment to fit_primitive_auto; '#' lines are comments); ids outside the segments are ignored.
+bool read_types(const std::string& path, std::vector<std::optional<primitive_edit::PrimitiveType>>& type_of_segment,
+                std::string& message)
+{
+  return read_lines(path, message, [&](const std::string& line) {
     std::istringstream words(line);
     long id = -1;
     std::string name;
@@ -99,24 +124,46 @@ bool read_types(const std::string& path, std::vector<std::optional<primitive_edi
       message = path + ": not a \"SEGMENT_ID TYPE\" line: " + line;
       return false;
     }
-    if (id < 0 || id >= static_cast<long>(type_of_segment.size()))
-      continue;
-    for (int t = 0; t < primitive_edit::kPrimitiveTypeCount; ++t) {
-      const auto type = static_cast<primitive_edit::PrimitiveType>(t);
-      std::string type_name = primitive_edit::primitive_type_name(type);
-      std::transform(type_name.begin(), type_name.end(), type_name.begin(), [](unsigned char c) { return std::tolower(c); });
-      if (type_name == name)
-        type_of_segment[static_cast<std::size_t>(id)] = type;
+    const auto type = type_named(name);
+    if (type && id >= 0 && id < static_cast<long>(type_of_segment.size()))
+      type_of_segment[static_cast<std::size_t>(id)] = *type;
+    return true;
+  });
+}
+
+// Reads --primitives lines into primitive_of_segment (ids outside the segments are ignored; '#' lines are
+// comments). A line of an unknown type or with too few numbers is refused.
+bool read_primitives(const std::string& path, std::vector<std::optional<primitive_edit::Primitive>>& primitive_of_segment,
+                     std::string& message)
+{
+  return read_lines(path, message, [&](const std::string& line) {
+    std::istringstream words(line);
+    long id = -1;
+    std::string name;
+    primitive_edit::Primitive q;
+    if (!(words >> id >> name >> q.origin.x() >> q.origin.y() >> q.origin.z() >> q.axis.x() >> q.axis.y() >>
+          q.axis.z() >> q.radius >> q.minor_radius >> q.half_angle)) {
+      message = path + ": not a primitive line: " + line;
+      return false;
     }
-  }
-  return true;
+    const auto type = type_named(name);
+    if (!type) {
+      message = path + ": unknown type in: " + line;
+      return false;
+    }
+    q.type = *type;
+    q.axis.normalize();
+    if (id >= 0 && id < static_cast<long>(primitive_of_segment.size()))
+      primitive_of_segment[static_cast<std::size_t>(id)] = q;
+    return true;
+  });
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-  std::string scan_path, labels_path, types_path, segmented_path, fits_path, snapped_path;
+  std::string scan_path, labels_path, types_path, primitives_path, segmented_path, fits_path, snapped_path;
   int runs = 3;
   double fit_tolerance = 0;
   bool relations = true;
@@ -153,6 +200,8 @@ int main(int argc, char** argv)
       labels_path = argv[++i];
     else if (a == "--types" && has_value)
       types_path = argv[++i];
+    else if (a == "--primitives" && has_value)
+      primitives_path = argv[++i];
     else if (a == "--segmented" && has_value)
       segmented_path = argv[++i];
     else if (a == "--fits" && has_value)
@@ -169,7 +218,7 @@ int main(int argc, char** argv)
   if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
       method >= primitive_edit::kFitMethodCount) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
+                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -221,6 +270,25 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
     return 1;
   }
+  SnapOptions snap_options;
+  snap_options.repair_folds = repair;
+  snap_options.prevent_flips = prevent_flips;
+  if (!primitives_path.empty()) {
+    std::vector<std::optional<Primitive>> given(static_cast<std::size_t>(K));
+    if (!read_primitives(primitives_path, given, message)) {
+      std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+      return 1;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const SnapReport snap = snap_segments(m, segment_of_face, given, snap_options);
+    std::printf("snap onto the given primitives: %.3f s, %d vertices moved (%d edge, %d corner of %d on borders, %d "
+                "slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
+                seconds_since(t0), snap.moved_vertices, snap.edge_vertices, snap.corner_vertices, snap.border_vertices,
+                snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices, snap.folded_faces, snap.folded_area);
+    if (!snapped_path.empty() && !bracket::save_ply(m, snapped_path, false))
+      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", snapped_path.c_str());
+    return 0;
+  }
   FitAllSegmentsOptions fit_all;
   fit_all.tolerance = fit_tolerance;
   fit_all.types = forced_type;
@@ -228,8 +296,7 @@ int main(int argc, char** argv)
   fit_all.relations = relations;
   fit_all.relation_options = relation_options;
   fit_all.snap = true;
-  fit_all.snap_options.repair_folds = repair;
-  fit_all.snap_options.prevent_flips = prevent_flips;
+  fit_all.snap_options = snap_options;
   const FitAllSegmentsResult result = fit_all_segments(m, segment_of_face, fit_all);
   if (!result.status) {
     std::fprintf(stderr, "bench_segment_scan: %s\n", result.status.error.c_str());
@@ -244,9 +311,9 @@ int main(int argc, char** argv)
     std::printf("\n");
   }
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner of %d "
-              "on borders, %d slid to unfold faces, %d held back), %d faces left folded (area %.4g)\n",
+              "on borders, %d slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
               result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
-              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices,
+              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices,
               snap.folded_faces, snap.folded_area);
   if (!fits_path.empty()) {
     std::ofstream out(fits_path);

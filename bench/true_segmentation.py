@@ -7,9 +7,11 @@ Output: a binary PLY of the same vertices and faces (vertex coordinates copied b
 face quality, as `bench_segment_scan SCAN.ply --labels OUT.ply` reads it: fitting and snapping the true
 segments gives the ceiling of any segment-fit-snap pipeline on that scan (bench/bracket/README.md).
 With --types TYPES.txt it also writes "SEGMENT_ID TYPE" per true surface (`bench_segment_scan --types`:
-fit each with its true type).
+fit each with its true type); with --primitives PRIMS.txt, "SEGMENT_ID TYPE ORIGIN(3) AXIS(3) RADIUS MINOR_RADIUS
+HALF_ANGLE" per true surface, in common/base/primitive.h's conventions (`bench_segment_scan --primitives`: snap
+onto the true primitives, the ideal that the fits are measured against).
 Standard library only.
-Usage: true_segmentation.py SCAN.ply TRUTH.txt REFERENCE.json OUT.ply [--types TYPES.txt]
+Usage: true_segmentation.py SCAN.ply TRUTH.txt REFERENCE.json OUT.ply [--types TYPES.txt] [--primitives PRIMS.txt]
 """
 import json
 import os
@@ -40,14 +42,33 @@ def write_labelled_ply(path, vertices, faces, quality):
         out.write(b"".join(face.pack(3, f[0], f[1], f[2], float(q)) for f, q in zip(faces, quality)))
 
 
+def primitive_line(face):
+    """The reference face's exact primitive as a --primitives line, or None for a free-form face."""
+    t = face["type"]
+    if t == "plane":
+        origin, axis, sizes = face["point"], face["normal"], (0, 0, 0)
+    elif t == "sphere":
+        origin, axis, sizes = face["centre"], (0, 0, 1), (face["radius"], 0, 0)
+    elif t == "cylinder":
+        origin, axis, sizes = face["point"], face["axis"], (face["radius"], 0, 0)
+    elif t == "cone":
+        origin, axis, sizes = face["apex"], face["axis"], (0, 0, face["half_angle"])
+    elif t == "torus":
+        origin, axis, sizes = face["centre"], face["axis"], (face["major_radius"], face["minor_radius"], 0)
+    else:
+        return None
+    return "%d %s %s\n" % (face["index"], t, " ".join("%.17g" % x for x in (*origin, *axis, *sizes)))
+
+
 def main():
     args = sys.argv[1:]
-    types_txt = None
-    if len(args) == 6 and args[4] == "--types":
-        types_txt = args[5]
-        args = args[:4]
+    options = {"--types": None, "--primitives": None}
+    while len(args) > 4 and len(args) % 2 == 0 and args[-2] in options:
+        options[args[-2]] = args[-1]
+        args = args[:-2]
     if len(args) != 4:
         raise SystemExit(__doc__)
+    types_txt, primitives_txt = options["--types"], options["--primitives"]
     scan_ply, truth_txt, reference_json, out_ply = args
     with open(reference_json) as f:
         reference = json.load(f)["faces"]
@@ -65,6 +86,14 @@ def main():
             for f in reference:
                 if f["index"] == f.get("surface", f["index"]):
                     out.write("%d %s\n" % (f["index"], f["type"]))
+    if primitives_txt:
+        with open(primitives_txt, "w") as out:
+            out.write("# true primitive of each segment of %s: id type origin axis radius minor half_angle\n"
+                      % os.path.basename(out_ply))
+            for f in reference:
+                line = primitive_line(f) if f["index"] == f.get("surface", f["index"]) else None
+                if line:
+                    out.write(line)
     print("%s: %d faces, %d true surfaces, %d faces without one" % (
         out_ply, len(faces), len(set(q for q in quality if q >= 0)), quality.count(-1)))
 
