@@ -23,7 +23,8 @@
 // --repair 0 holds folded faces back without first sliding vertices along their surfaces (SnapOptions::repair_folds);
 // --prevent-flips 0 leaves folds as they are (their area is printed either way).
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
-//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply]
+//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply]
+//        [--fits OUT.json] [--snapped OUT.ply]
 #include "bracket/bracket_mesh.h"
 
 #include "common/pipeline/fit_all_segments.h"
@@ -133,8 +134,8 @@ bool read_types(const std::string& path, std::vector<std::optional<primitive_edi
 
 // Reads --primitives lines into primitive_of_segment (ids outside the segments are ignored; '#' lines are
 // comments). A line of an unknown type or with too few numbers is refused.
-bool read_primitives(const std::string& path, std::vector<std::optional<primitive_edit::Primitive>>& primitive_of_segment,
-                     std::string& message)
+bool read_primitives(const std::string& path,
+                     std::vector<std::optional<primitive_edit::Primitive>>& primitive_of_segment, std::string& message)
 {
   return read_lines(path, message, [&](const std::string& line) {
     std::istringstream words(line);
@@ -284,7 +285,8 @@ int main(int argc, char** argv)
     std::printf("snap onto the given primitives: %.3f s, %d vertices moved (%d edge, %d corner of %d on borders, %d "
                 "slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
                 seconds_since(t0), snap.moved_vertices, snap.edge_vertices, snap.corner_vertices, snap.border_vertices,
-                snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices, snap.folded_faces, snap.folded_area);
+                snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices, snap.folded_faces,
+                snap.folded_area);
     if (!snapped_path.empty() && !bracket::save_ply(m, snapped_path, false))
       std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", snapped_path.c_str());
     return 0;
@@ -311,10 +313,11 @@ int main(int argc, char** argv)
     std::printf("\n");
   }
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner of %d "
-              "on borders, %d slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
+              "on borders, %d slid to unfold faces, %d held back, %d of them partway), %d faces left folded "
+              "(area %.4g)\n",
               result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
-              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices,
-              snap.folded_faces, snap.folded_area);
+              snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices,
+              snap.partway_vertices, snap.folded_faces, snap.folded_area);
   if (!fits_path.empty()) {
     std::ofstream out(fits_path);
     write_fits_json(out, result, scan_path, true);

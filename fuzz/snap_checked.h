@@ -6,7 +6,8 @@
 //         tool's Apply: snap_onto_primitive; the others keep what the mesh's attribute holds).
 // Checks: no vertex becomes non-finite and a non-finite one is left as it was; vertices on no snapped segment
 //         stay where they are unless the fold repair slid them; flip prevention leaves no fold, and without it
-//         nothing is repaired or held back; only vertices held back come part of the way; the report is finite; the edit tool's target keeps its primitive.
+//         nothing is repaired or held back; only vertices held back come part of the way; the report is finite;
+//         the edit tool's target keeps its primitive.
 #ifndef PRIMITIVE_EDIT_FUZZ_SNAP_CHECKED_H
 #define PRIMITIVE_EDIT_FUZZ_SNAP_CHECKED_H
 

@@ -3,9 +3,9 @@
 //
 // Input:  a SnapReport. Output: e.g. "1200 vertices moved (64 onto edges and 8 onto corners of the 80 on borders
 //         between segments; 96 slid along their surfaces to unfold triangles, 4 held back where that was not
-//         enough, 3 of them part of the way), mean displacement 0.05, max 1": the share of the border on its edge is how clean the edges
-//         came out (left out when no vertex is on a border). A fold left (only without flip prevention) adds
-//         its face count and area. Cost: O(1).
+//         enough, 3 of them part of the way), mean displacement 0.05, max 1": the share of the border on its
+//         edge is how clean the edges came out (left out when no vertex is on a border). A fold left (only
+//         without flip prevention) adds its face count and area. Cost: O(1).
 #ifndef PRIMITIVE_EDIT_DESCRIBE_SNAP_REPORT_H
 #define PRIMITIVE_EDIT_DESCRIBE_SNAP_REPORT_H
 
@@ -25,7 +25,8 @@ inline std::string describe_snap_report(const SnapReport& r)
                   r.edge_vertices, r.corner_vertices, r.border_vertices);
     out += text;
   }
-  std::snprintf(text, sizeof text, "%d slid along their surfaces to unfold triangles, %d held back where that was not enough",
+  std::snprintf(text, sizeof text,
+                "%d slid along their surfaces to unfold triangles, %d held back where that was not enough",
                 r.repaired_vertices, r.reverted_vertices);
   out += text;
   if (r.partway_vertices > 0)

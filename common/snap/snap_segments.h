@@ -560,7 +560,8 @@ private:
     constexpr int kSteps = 8, kSweeps = 4;
     std::vector<int> held;
     for (std::size_t v = 0; v < m_.vert.size(); ++v)
-      if (!m_.vert[v].IsD() && stage_[v] == kAtRest && (kind_[v] == kSingle || kind_[v] == kEdge || kind_[v] == kCorner))
+      if (!m_.vert[v].IsD() && stage_[v] == kAtRest &&
+          (kind_[v] == kSingle || kind_[v] == kEdge || kind_[v] == kCorner))
         held.push_back(int(v));
     std::vector<int> reached(held.size(), 0);  // eighths of the way taken
     std::vector<int> groups;
