@@ -564,16 +564,19 @@ private:
           (kind_[v] == kSingle || kind_[v] == kEdge || kind_[v] == kCorner))
         held.push_back(int(v));
     std::vector<int> reached(held.size(), 0);  // eighths of the way taken
+    std::vector<Eigen::Vector3d> way(held.size());  // from the scan position to the projection
     std::vector<int> groups;
+    for (std::size_t i = 0; i < held.size(); ++i) {
+      gather(std::size_t(held[i]), groups);
+      way[i] = nearest_projection(groups, rest(held[i])) - rest(held[i]);
+    }
     for (int sweep = 0; sweep < kSweeps; ++sweep) {
       bool moved = false;
       for (std::size_t i = 0; i < held.size(); ++i) {
         const std::size_t v = std::size_t(held[i]);
-        gather(v, groups);
-        const Eigen::Vector3d p = rest(int(v)), target = nearest_projection(groups, p);
         const CoordType before = m_.vert[v].cP();
         for (int k = kSteps; k > reached[i]; --k) {
-          const Eigen::Vector3d candidate = p + (double(k) / kSteps) * (target - p);
+          const Eigen::Vector3d candidate = rest(held[i]) + (double(k) / kSteps) * way[i];
           if (!representable(candidate))
             break;
           m_.vert[v].P() = to_coord(candidate);
