@@ -539,7 +539,8 @@ private:
     report_.reverted_vertices = static_cast<int>(std::count(reverted.begin(), reverted.end(), std::uint8_t(1)));
   }
 
-  // Whether every live face around vertex v is unfolded, with the positions as they are now.
+  // Whether every live face around vertex v is unfolded, with the positions as they are now. Not face_is_bad:
+  // it passes a face whose three vertices are kAtRest, as the vertex under test still is while it is tried.
   bool faces_unfolded_around(std::size_t v) const
   {
     for (int i = vertex_faces_.offset[v]; i < vertex_faces_.offset[v + 1]; ++i) {
