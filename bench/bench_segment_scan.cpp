@@ -271,7 +271,7 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
     return 1;
   }
-  SnapOptions snap_options;
+  SnapOptions snap_options = fitted_snap_options(); // the given primitives too are the scan's
   snap_options.repair_folds = repair;
   snap_options.prevent_flips = prevent_flips;
   if (!primitives_path.empty()) {

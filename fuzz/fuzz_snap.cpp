@@ -67,6 +67,7 @@ void run(Decoder& in)
   options.max_edge_distance = in.special(1.0);
   options.prevent_flips = !in.bit();
   options.repair_folds = !in.bit();
+  options.wide_repair = !in.bit();
   int target = -1;
   Primitive target_primitive;
   if (K > 0 && in.u8() % 4 == 0) {

@@ -48,7 +48,7 @@ struct FitAllSegmentsOptions
   bool relations = true;  // find parallel, perpendicular, coaxial... primitives and refit them together
   RelationOptions relation_options;
   bool snap = false;
-  SnapOptions snap_options;
+  SnapOptions snap_options = fitted_snap_options();
   int threads = 0;  // <= 0: all hardware threads
 };
 

@@ -9,8 +9,9 @@
 // Output: RepairFoldsReport. Only movable vertices within max_rounds rings of a fold move, each onto its
 //         surface. A face is folded when its normal turned by more than 90 degrees from its reference or its
 //         area fell below 1e-3 of the reference (snap_segments' guard uses the same test). A connected
-//         region that still holds a fold after the last round gets its snapped positions back, so the repair
-//         never leaves more folds than it found (snap_segments then holds those back).
+//         part of the region that still holds a fold after the last round gets its snapped positions back
+//         unless its repaired ones fold fewer of its faces, so the repair never leaves more folds than it
+//         found (snap_segments then holds those back).
 // Method: the region starts as the movable vertices around the folded faces; each round grows it by one
 //         ring around the faces still folded (options.widen: and around the whole region), then runs
 //         Gauss-Seidel sweeps of the umbrella operator (a region vertex goes to the mean of its neighbours,
@@ -53,6 +54,9 @@ struct RepairFoldsOptions
   // Sweeps over the grown region after the last round, while folds remain or the region still moves, before
   // giving up on it.
   int settle_sweeps = 100;
+  // A part that still holds folds keeps its repaired positions when they fold fewer of its faces than its snapped
+  // ones (off: it gets its snapped positions back, where a wider repair can start again).
+  bool keep_partial = true;
 };
 
 struct RepairFoldsReport
@@ -227,17 +231,40 @@ struct FoldRegion
     return parts;
   }
 
-  // Gives the parts (connected_parts()) that still hold a fold their snapped positions back.
-  void restore_failed_parts(const std::vector<std::vector<int>>& parts, const std::vector<Eigen::Vector3d>& snapped)
+  // Gives the parts (connected_parts()) that still hold a fold their snapped positions back, unless
+  // `keep_partial` and their repaired positions hold fewer folds than those.
+  void restore_failed_parts(const std::vector<std::vector<int>>& parts, const std::vector<Eigen::Vector3d>& snapped,
+                            bool keep_partial)
   {
     std::vector<std::uint8_t> at_fold(position.size(), 0);
     for (int f : folds)
       for (int k = 0; k < 3; ++k)
         at_fold[std::size_t(corner(f, k))] = 1;
-    for (const std::vector<int>& part : parts)
-      if (std::any_of(part.begin(), part.end(), [&](int v) { return at_fold[std::size_t(v)] != 0; }))
-        for (int v : part)
-          position[std::size_t(v)] = snapped[std::size_t(v)];
+    std::vector<int> seen(face_vertex.size() / 3, -1);
+    std::vector<Eigen::Vector3d> repaired;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      const std::vector<int>& part = parts[p];
+      if (std::none_of(part.begin(), part.end(), [&](int v) { return at_fold[std::size_t(v)] != 0; }))
+        continue;
+      std::vector<int> faces;
+      for (int v : part)
+        for_faces_of(v, [&](int f) {
+          if (seen[std::size_t(f)] != int(p)) {
+            seen[std::size_t(f)] = int(p);
+            faces.push_back(f);
+          }
+        });
+      auto count = [&] { return std::count_if(faces.begin(), faces.end(), [&](int f) { return folded(f); }); };
+      const auto folded_repaired = count();
+      repaired.resize(part.size());
+      for (std::size_t i = 0; i < part.size(); ++i) {
+        repaired[i] = position[std::size_t(part[i])];
+        position[std::size_t(part[i])] = snapped[std::size_t(part[i])];
+      }
+      if (keep_partial && folded_repaired < count())
+        for (std::size_t i = 0; i < part.size(); ++i)
+          position[std::size_t(part[i])] = repaired[i];
+    }
   }
 };
 
@@ -359,7 +386,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
     region.find_folds(first_folds, mark, report.rounds); // marks from here on are ones no find_folds has used
   }
   if (!region.folds.empty()) {
-    region.restore_failed_parts(parts, snapped);
+    region.restore_failed_parts(parts, snapped, options.keep_partial);
     region.find_folds(first_folds, mark, report.rounds + 1);
   }
   report.folded_faces = int(region.folds.size());

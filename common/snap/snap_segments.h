@@ -71,7 +71,21 @@ struct SnapOptions
   bool prevent_flips = true;
   // With prevent_flips: slide vertices along their surfaces to unfold faces before holding any back.
   bool repair_folds = true;
+  // With repair_folds: after the repair around each fold, a wide one (grown around the whole region) for the
+  // folds left, which a primitive moved far from the scan needs (the edit tool's widened hole pushes the plane
+  // around it outwards). Off, the first repair keeps what it undid of a fold it could not undo whole. Off for
+  // primitives fitted to the scan (Fit All): on the bracket scans the wide repair undid almost none of the
+  // folds left, and keeping the partial repairs gains more (bench/README.md, Snapping).
+  bool wide_repair = true;
 };
+
+// The options for snapping onto primitives fitted to the scan (Fit All; see wide_repair).
+inline SnapOptions fitted_snap_options()
+{
+  SnapOptions options;
+  options.wide_repair = false;
+  return options;
+}
 
 struct SnapReport
 {
@@ -411,8 +425,12 @@ private:
     repair_groups_ = LazyLists(nv);
     int rounds = 0;
     for (const bool widen : {false, true}) {
+      if (widen && !options_.wide_repair)
+        break;
       RepairFoldsOptions options;
       options.widen = widen;
+      // The wide repair starts from the snapped positions: from partial repairs, the widened hole's failed.
+      options.keep_partial = !widen && !options_.wide_repair;
       if (!widen)
         options.settle_sweeps = 0; // a narrow region is a few rings deep: its rounds have converged
       const RepairFoldsReport pass = repair_folds(

@@ -100,6 +100,31 @@ TEST(RepairFolds, UnrepairableFoldElsewhereDoesNotCutTheSettleShort)
   EXPECT_EQ(largest_difference, 0.0);
 }
 
+// A fold that can be undone beside one that cannot, in one connected part of the region: the part keeps the
+// repaired positions, which hold fewer folds than the snapped ones, instead of getting its snapped positions back
+// whole (on the bundled scan that threw away a third of the folds the sweeps had undone).
+TEST(RepairFolds, PartlyRepairedPartKeepsItsRepair)
+{
+  FlatGrid g(40, 30);
+  const int pushed = g.id(15, 15), pinned = g.id(21, 15);
+  g.points[std::size_t(pushed)].x() += 2.5;
+  g.points[std::size_t(pinned)].x() += 2.5;
+  std::vector<bool> movable(g.points.size(), true);
+  movable[std::size_t(pinned)] = false;
+  const int folded_before = g.folded_faces_near(pushed, 40);
+  const int pinned_before = g.folded_faces_near(pinned, 1);
+  RepairFoldsOptions options;
+  options.widen = true;
+  const RepairFoldsReport report = repair_folds(
+      g.points, g.face_vertex, g.vertex_faces, g.reference,
+      [&](std::size_t v) { return movable[v] && !g.on_border(int(v)); }, onto_plane, options);
+  EXPECT_GT(pinned_before, 0);
+  EXPECT_GT(report.moved_vertices, 0);
+  EXPECT_EQ(report.folded_faces, g.folded_faces_near(pushed, 40));
+  EXPECT_LT(report.folded_faces, folded_before);
+  EXPECT_EQ(g.folded_faces_near(pushed, 2), 0);
+}
+
 // The fold counts of three repairs, check by check (printed by a scratch build): a widened hole's rim, whose first
 // sweeps fold more faces than there were before they unfold them all, must not stall; a 1M-face scan's wide
 // region, whose folds fall slowly and then rise as the growing region's sweeps fold new faces at its pinned
