@@ -429,7 +429,8 @@ private:
         break;
       RepairFoldsOptions options;
       options.widen = widen;
-      // The wide repair starts from the snapped positions: from partial repairs, the widened hole's failed.
+      // Partial repairs only when no wide repair follows: started from them instead of the snapped positions,
+      // the wide repair of a widened hole failed (bench/README.md, Snapping).
       options.keep_partial = !widen && !options_.wide_repair;
       if (!widen)
         options.settle_sweeps = 0; // a narrow region is a few rings deep: its rounds have converged
