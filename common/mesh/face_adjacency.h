@@ -31,33 +31,34 @@ struct FaceAdjacency
 
 namespace detail {
 
+// The vertex indices of face f into idx; false for a deleted face or one with a null or out-of-range vertex.
+template <class MeshType>
+bool face_corner_indices(const MeshType& m, std::size_t f, int idx[3])
+{
+  const auto& face = m.face[f];
+  if (face.IsD() || m.vert.empty())
+    return false;
+  for (int k = 0; k < 3; ++k) {
+    const auto* v = face.cV(k);
+    if (v == nullptr)
+      return false;
+    const std::ptrdiff_t i = v - &m.vert[0];
+    if (i < 0 || std::size_t(i) >= m.vert.size())
+      return false;
+    idx[k] = int(i);
+  }
+  return true;
+}
+
 // Vertex indices of every face, 3 per face; -1 for deleted faces and faces with invalid vertex pointers.
 template <class MeshType>
 std::vector<int> face_vertex_indices(const MeshType& m)
 {
   const std::size_t face_count = m.face.size();
-  const std::size_t vertex_count = m.vert.size();
   std::vector<int> fv = huge_page_vector(3 * face_count, -1);
   for (std::size_t f = 0; f < face_count; ++f) {
-    const auto& face = m.face[f];
-    if (face.IsD())
-      continue;
     int idx[3];
-    bool valid = true;
-    for (int k = 0; k < 3; ++k) {
-      const auto* v = face.cV(k);
-      if (v == nullptr || vertex_count == 0) {
-        valid = false;
-        break;
-      }
-      const std::ptrdiff_t i = v - &m.vert[0];
-      if (i < 0 || std::size_t(i) >= vertex_count) {
-        valid = false;
-        break;
-      }
-      idx[k] = int(i);
-    }
-    if (valid)
+    if (face_corner_indices(m, f, idx))
       for (int k = 0; k < 3; ++k)
         fv[3 * f + k] = idx[k];
   }

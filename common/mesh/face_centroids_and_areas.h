@@ -25,6 +25,25 @@ struct FaceCentroidsAndAreas
   std::vector<double> area;
 };
 
+// The centroid and area of one face, as face_centroids_and_areas gives them; false (and nothing written) for a
+// face that is deleted, lacks a vertex, or whose centroid or area is not finite.
+template <class FaceType>
+bool face_centroid_and_area(const FaceType& face, Eigen::Vector3d& centroid, double& area)
+{
+  if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)
+    return false;
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k)
+    p[k] = Eigen::Vector3d(double(face.cP(k)[0]), double(face.cP(k)[1]), double(face.cP(k)[2]));
+  const double a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+  const Eigen::Vector3d c = (p[0] + p[1] + p[2]) / 3.0;
+  if (!std::isfinite(a) || !c.allFinite())
+    return false;
+  centroid = c;
+  area = a;
+  return true;
+}
+
 template <class MeshType>
 FaceCentroidsAndAreas face_centroids_and_areas(const MeshType& m)
 {
@@ -32,20 +51,8 @@ FaceCentroidsAndAreas face_centroids_and_areas(const MeshType& m)
   FaceCentroidsAndAreas out;
   assign_on_huge_pages(out.centroid, n, Eigen::Vector3d(Eigen::Vector3d::Zero()));
   assign_on_huge_pages(out.area, n, 0.0);
-  for (std::size_t f = 0; f < n; ++f) {
-    const auto& face = m.face[f];
-    if (face.IsD() || face.cV(0) == nullptr || face.cV(1) == nullptr || face.cV(2) == nullptr)
-      continue;
-    Eigen::Vector3d p[3];
-    for (int k = 0; k < 3; ++k)
-      p[k] = Eigen::Vector3d(double(face.cP(k)[0]), double(face.cP(k)[1]), double(face.cP(k)[2]));
-    const double a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    const Eigen::Vector3d c = (p[0] + p[1] + p[2]) / 3.0;
-    if (!std::isfinite(a) || !c.allFinite())
-      continue;
-    out.centroid[f] = c;
-    out.area[f] = a;
-  }
+  for (std::size_t f = 0; f < n; ++f)
+    face_centroid_and_area(m.face[f], out.centroid[f], out.area[f]);
   return out;
 }
 

@@ -24,7 +24,6 @@
 #include "common/base/status.h"
 #include "common/mesh/count_segments.h"
 #include "common/mesh/surface_roughness_attribute.h"
-#include "common/mesh/face_adjacency.h"
 #include "common/mesh/gather_segment_samples.h"
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/mesh/update_normals_and_bounds.h"
@@ -91,11 +90,8 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   AutoFitOptions fit_options;
   fit_options.tolerance = options.tolerance;
   fit_options.fit = options.fit;
-  FaceAdjacency adjacency;
-  if (options.tolerance == 0 || options.relations) {
-    adjacency = build_face_adjacency(m);
-    out.roughness = surface_roughness(m, adjacency);
-  }
+  if (options.tolerance == 0 || options.relations)
+    out.roughness = surface_roughness(m);
   if (options.tolerance == 0)
     fit_options.roughness = out.roughness;
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
@@ -120,7 +116,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   if (options.relations && out.fitted >= 2) {
     t0 = Clock::now();
     report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
-    const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face, adjacency),
+    const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face),
                                                         out.roughness, options.relation_options);
     if (!related.status) {
       out.status = Status::failure("relations: " + related.status.error);
