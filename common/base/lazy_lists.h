@@ -10,6 +10,8 @@
 #ifndef PRIMITIVE_EDIT_LAZY_LISTS_H
 #define PRIMITIVE_EDIT_LAZY_LISTS_H
 
+#include "common/base/huge_page_vector.h"
+
 #include <cstddef>
 #include <limits>
 #include <utility>
@@ -20,7 +22,7 @@ namespace primitive_edit {
 class LazyLists
 {
 public:
-  explicit LazyLists(std::size_t count) : start_(count, kNotBuilt) {}
+  explicit LazyLists(std::size_t count) : start_(huge_page_vector(count, kNotBuilt)) {}
 
   template <class Build>
   std::pair<const int*, const int*> get(std::size_t index, Build&& build)

@@ -13,6 +13,8 @@
 #ifndef PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 #define PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 
+#include "common/base/huge_page_vector.h"
+
 #include <vcg/complex/complex.h>
 
 #include <Eigen/Core>
@@ -65,7 +67,7 @@ std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std:
   };
 
   // local[v] is the row of vertex v in the current segment; stamp[v] says which segment set it.
-  std::vector<int> local(m.vert.size(), -1), stamp(m.vert.size(), -1);
+  std::vector<int> local = huge_page_vector(m.vert.size(), -1), stamp = huge_page_vector(m.vert.size(), -1);
   std::vector<Eigen::Vector3d> normal_sum;
   std::vector<double> weight_sum;
   std::vector<int> rows;
@@ -107,6 +109,8 @@ std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std:
     samples.points.resize(n, 3);
     samples.normals.resize(n, 3);
     samples.weights.resize(n);
+    advise_huge_pages(samples.points.data(), std::size_t(n) * 3 * sizeof(double));
+    advise_huge_pages(samples.normals.data(), std::size_t(n) * 3 * sizeof(double));
     samples.vertex = rows;
     samples.area = area;
     for (Eigen::Index r = 0; r < n; ++r) {

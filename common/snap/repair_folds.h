@@ -28,6 +28,7 @@
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/base/lazy_lists.h"
 #include "common/mesh/vertex_faces.h"
 
@@ -205,7 +206,7 @@ struct FoldRegion
   // The region's vertices by connected part (parts share no face, so each can settle on its own).
   std::vector<std::vector<int>> connected_parts() const
   {
-    std::vector<int> parent(position.size());
+    std::vector<int> parent = huge_page_vector<int>(position.size());
     std::iota(parent.begin(), parent.end(), 0);
     auto root = [&](int v) {
       while (parent[std::size_t(v)] != v)
@@ -218,7 +219,7 @@ struct FoldRegion
           if (corner(g, j) >= 0 && state[std::size_t(corner(g, j))] == 1)
             parent[std::size_t(root(corner(g, j)))] = root(v);
       });
-    std::vector<int> part_of_root(position.size(), -1);
+    std::vector<int> part_of_root = huge_page_vector(position.size(), -1);
     std::vector<std::vector<int>> parts;
     for (int v : vertices) {
       int& part = part_of_root[std::size_t(root(v))];
@@ -240,7 +241,7 @@ struct FoldRegion
     for (int f : folds)
       for (int k = 0; k < 3; ++k)
         at_fold[std::size_t(corner(f, k))] = 1;
-    std::vector<int> seen(face_vertex.size() / 3, -1);
+    std::vector<int> seen = huge_page_vector(face_vertex.size() / 3, -1);
     std::vector<Eigen::Vector3d> repaired;
     for (std::size_t p = 0; p < parts.size(); ++p) {
       const std::vector<int>& part = parts[p];
@@ -363,11 +364,15 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
   if (region.folds.empty())
     return report;
   umbrella = LazyLists(position.size());
-  lister.assign(reference.size(), -1);
+  assign_on_huge_pages(lister, reference.size(), -1);
 
-  const std::vector<Eigen::Vector3d> snapped = position;
+  const std::vector<Eigen::Vector3d> snapped = [&] {
+    std::vector<Eigen::Vector3d> copy = huge_page_vector<Eigen::Vector3d>(position.size());
+    std::copy(position.begin(), position.end(), copy.begin());
+    return copy;
+  }();
   const std::vector<int> first_folds = region.folds; // those with no movable vertex stay on the list
-  std::vector<int> mark(reference.size(), -1);
+  std::vector<int> mark = huge_page_vector(reference.size(), -1);
   repair_detail::FoldTrend trend(region.folds.size());
   for (bool stalled = false; report.rounds < options.max_rounds && !region.folds.empty() && !stalled;
        ++report.rounds) {

@@ -41,6 +41,7 @@
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/geometry/common_point_of_primitives.h"
 #include "common/base/constants.h"
+#include "common/base/huge_page_vector.h"
 #include "common/base/lazy_lists.h"
 #include "common/base/primitive.h"
 #include "common/mesh/face_adjacency.h"
@@ -191,10 +192,10 @@ private:
     const std::size_t nv = m_.vert.size(), nf = m_.face.size();
     face_vertex_ = detail::face_vertex_indices(m_);
     vertex_faces_ = build_vertex_faces(face_vertex_, nv);
-    original_.resize(nv);
+    original_ = huge_page_vector<CoordType>(nv);
     for (std::size_t v = 0; v < nv; ++v)
       original_[v] = m_.vert[v].cP();
-    reference_.assign(nf, Eigen::Vector3d::Zero());
+    assign_on_huge_pages(reference_, nf, Eigen::Vector3d(Eigen::Vector3d::Zero()));
     double edge_sum = 0;
     std::size_t edge_count = 0;
     for (std::size_t f = 0; f < nf; ++f) {
@@ -417,11 +418,11 @@ private:
   void repair()
   {
     const std::size_t nv = m_.vert.size();
-    std::vector<Eigen::Vector3d> position(nv);
+    std::vector<Eigen::Vector3d> position = huge_page_vector<Eigen::Vector3d>(nv);
     for (std::size_t v = 0; v < nv; ++v)
       position[v] = now(int(v));
     // Narrow regions first (each fold's own neighbourhood), then wide ones for the folds left (RepairFoldsOptions::widen).
-    host_face_.assign(nv, -1);
+    assign_on_huge_pages(host_face_, nv, -1);
     repair_groups_ = LazyLists(nv);
     int rounds = 0;
     for (const bool widen : {false, true}) {
@@ -528,7 +529,7 @@ private:
         candidates.push_back(static_cast<int>(f));
     std::vector<std::uint8_t> reverted(nv, 0), drop(nv, 0);
     std::vector<int> dropped;
-    std::vector<int> face_mark(nf, -1);
+    std::vector<int> face_mark = huge_page_vector(nf, -1);
     for (int round = 0; !candidates.empty(); ++round) {
       dropped.clear();
       for (int f : candidates) {
