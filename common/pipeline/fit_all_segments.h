@@ -14,8 +14,8 @@
 //         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
 //         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
-//         relations), gather_segment_samples, fit_segments
-//         (all threads), relate_primitives (segment_contacts for the tangencies), snap_segments.
+//         relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
+//         segment_contacts for the tangencies), snap_segments.
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -117,7 +117,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
     t0 = Clock::now();
     report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
     const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face),
-                                                        out.roughness, options.relation_options);
+                                                        out.roughness, options.relation_options, {}, options.threads);
     if (!related.status) {
       out.status = Status::failure("relations: " + related.status.error);
       return out;

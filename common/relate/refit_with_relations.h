@@ -5,7 +5,9 @@
 // Input:  RelatedSegment per segment: its primitive (the start: the segment's own fit), its points and
 //         weights (weight 0: not used; e.g. outliers of the segment's own robust fit), and whether it is
 //         fixed (held as it is, e.g. a segment already snapped in the edit tool); the relations
-//         (relation.h) between segments; the iteration limit.
+//         (relation.h) between segments; the iteration limit; the threads (<= 0: all hardware threads) over which
+//         the segments' normal equations are spread from kParallelRelationPoints points on (the result is the
+//         same for any count).
 // Output: RelationRefit: every segment's primitive (those in no relation, and fixed ones, unchanged), the
 //         weighted RMS distance of each segment's points to it, the largest violation of a relation after
 //         the refit (in mesh units; angles times the part's size) and the iterations. A failed status when
@@ -18,13 +20,14 @@
 //         relation_residual), by the Schur complement S = C A^-1 C^T with a pseudo-inverse, so that
 //         redundant relations (three planes mutually perpendicular twice over) are harmless. A step is taken
 //         when it halves the largest violation, or lowers the cost without raising the violation.
-// Cost:   per step O(N) for the normal equations (N points of the segments in relations), O(R) relation
+// Cost:   per step O(N / threads) for the normal equations (N points of the segments in relations), O(R) relation
 //         evaluations for the Jacobian (R relations, at most 14 each), and O(m^2 n + m^3) for the Schur
 //         complement (m relation components, n <= 7 K unknowns); up to max_iterations steps.
 #ifndef PRIMITIVE_EDIT_REFIT_WITH_RELATIONS_H
 #define PRIMITIVE_EDIT_REFIT_WITH_RELATIONS_H
 
 #include "common/base/canonicalize_primitive.h"
+#include "common/base/parallel_for.h"
 #include "common/base/status.h"
 #include "common/fit/refine_primitive.h"
 #include "common/relate/constrained_step.h"
@@ -55,6 +58,9 @@ struct RelationRefit
   double max_violation = 0;
   int iterations = 0;
 };
+
+// The points in relations from which a refit's passes over them are split between threads.
+constexpr Eigen::Index kParallelRelationPoints = 20000;
 
 namespace relate_detail {
 
@@ -116,23 +122,33 @@ inline bool relations_name_valid_segments(const std::vector<RelatedSegment>& seg
 }
 
 // The data term of the unknown segments at q: its cost and each block's normal equations (one pass: a tried
-// step's blocks are the next step's when it is taken).
+// step's blocks are the next step's when it is taken). Segments are spread over `threads`, each segment's sums
+// taken by one thread and added in segment order, so the result does not depend on the thread count.
 inline double relation_data_term(const std::vector<RelatedSegment>& segments,
                                  const std::vector<Eigen::VectorXd>& weights, const std::vector<int>& offset,
-                                 const std::vector<Primitive>& q, std::vector<StepBlock>& blocks)
+                                 const std::vector<Primitive>& q, std::vector<StepBlock>& blocks, int threads)
 {
   using namespace refine_detail;
+  std::vector<double> cost_of(segments.size(), 0.0);
+  std::vector<StepBlock> block_of(segments.size());
+  parallel_for(segments.size(), threads, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t s = begin; s < end; ++s) {
+      if (offset[s] < 0)
+        continue;
+      Mat7 JtJ;
+      Vec7 Jtr;
+      cost_of[s] = normal_equations(q[s], segments[s].points, weights[s], &JtJ, &Jtr);
+      const int k = parameter_count(q[s].type);
+      block_of[s] = {JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]};
+    }
+  });
   double cost = 0;
   blocks.clear();
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    if (offset[s] < 0)
-      continue;
-    Mat7 JtJ;
-    Vec7 Jtr;
-    cost += normal_equations(q[s], segments[s].points, weights[s], &JtJ, &Jtr);
-    const int k = parameter_count(q[s].type);
-    blocks.push_back({JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]});
-  }
+  for (std::size_t s = 0; s < segments.size(); ++s)
+    if (offset[s] >= 0) {
+      cost += cost_of[s];
+      blocks.push_back(std::move(block_of[s]));
+    }
   return cost;
 }
 
@@ -158,7 +174,8 @@ inline bool apply_relation_step(const std::vector<Primitive>& p, const std::vect
 } // namespace relate_detail
 
 inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& segments,
-                                          const std::vector<Relation>& relations, int max_iterations = 40)
+                                          const std::vector<Relation>& relations, int max_iterations = 40,
+                                          int threads = 1)
 {
   using namespace relate_detail;
   RelationRefit out;
@@ -188,8 +205,13 @@ inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& seg
   const double violation_tolerance = 1e-8 * length, violation_enough = 1e-6 * length;
 
   std::vector<Primitive>& p = out.primitives;
+  // A second thread pays for its start (tens of microseconds a step) only on many points.
+  Eigen::Index points = 0;
+  for (std::size_t s = 0; s < segments.size(); ++s)
+    points += offset[s] >= 0 ? segments[s].points.rows() : 0;
+  const int data_threads = points >= kParallelRelationPoints ? threads : 1;
   auto data_term = [&](const std::vector<Primitive>& q, std::vector<StepBlock>& blocks) {
-    return relation_data_term(segments, weights, offset, q, blocks);
+    return relation_data_term(segments, weights, offset, q, blocks, data_threads);
   };
 
   std::vector<StepBlock> blocks;

@@ -3,8 +3,8 @@
 //
 // Input:  per segment its fitted primitive (std::nullopt: free-form, left out) and its samples
 //         (gather_segment_samples.h: points and weights), the segments' contacts (segment_contacts.h), the
-//         scan's noise (RMS; 0 or not finite: unknown), which segments are held fixed (empty: none), and
-//         RelationOptions.
+//         scan's noise (RMS; 0 or not finite: unknown), which segments are held fixed (empty: none),
+//         RelationOptions, and the threads of the refits (refit_with_relations.h; the result is the same for any).
 // Output: RelatedPrimitives: the relations kept, each segment's primitive after the joint refit (the input
 //         where the segment is in no relation), the relations the check after the refit dropped, and a
 //         status (failed, with the primitives untouched, only for bad options or, in a segment with a
@@ -141,7 +141,8 @@ inline int drop_relations_of(int worst, std::vector<Relation>& kept, std::vector
 inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primitive>>& fitted,
                                            const std::vector<SegmentSamples>& samples,
                                            const std::vector<SegmentContact>& contacts, double noise,
-                                           const RelationOptions& options, const std::vector<char>& fixed = {})
+                                           const RelationOptions& options, const std::vector<char>& fixed = {},
+                                           int threads = 1)
 {
   using namespace relate_detail;
   RelatedPrimitives out;
@@ -198,9 +199,9 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
 
   // 1. Directions.
   std::vector<Relation> directions = detect_direction_relations(start, info0, angle, options.max_cost_increase, length);
-  RelationRefit first = refit_with_relations(segments, directions);
+  RelationRefit first = refit_with_relations(segments, directions, 40, threads);
   if (!first.status)
-    directions.clear(), first = refit_with_relations(segments, directions);
+    directions.clear(), first = refit_with_relations(segments, directions, 40, threads);
   // 2. Positions, among the primitives refitted under the directions.
   std::vector<const Primitive*> turned(std::size_t(count), nullptr);
   for (int s = 0; s < count; ++s)
@@ -220,7 +221,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
     std::vector<RelatedSegment> from = segments;
     for (int s = 0; s < count; ++s)
       from[std::size_t(s)].primitive = first.primitives[std::size_t(s)];
-    refit = refit_with_relations(round == 0 ? from : segments, kept);
+    refit = refit_with_relations(round == 0 ? from : segments, kept, 40, threads);
     const int worst = refit.status ? worst_segment(refit, info0, start, options.max_cost_increase, length) : -1;
     if ((refit.status && worst < 0) || kept.empty() || round == 8)
       break;
@@ -229,7 +230,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
   if (!refit.status) {
     out.dropped += int(kept.size());
     kept.clear();
-    refit = refit_with_relations(segments, kept);
+    refit = refit_with_relations(segments, kept, 40, threads);
   }
   out.relations = kept;
   for (int s = 0; s < count; ++s)

@@ -354,6 +354,39 @@ TEST(Relations, ARelationBetweenFixedSegmentsIsCheckedNotAssumed)
   EXPECT_EQ(refit.primitives[0].axis, segments[0].primitive.axis);
 }
 
+// The refit spreads its segments' normal equations over threads from kParallelRelationPoints points on; each
+// segment's sums are one thread's, so the refit is the same to the last bit on any thread count.
+TEST(Relations, RefitIsTheSameOnAnyThreadCount)
+{
+  std::vector<RelatedSegment> segments(3);
+  for (int s = 0; s < 3; ++s) {
+    const Eigen::Vector3d axis = Eigen::Vector3d(0.03 * s, 0.02, 1).normalized();
+    const Patch p = cylinder_patch(Eigen::Vector3d(8.0 * s, 0, 0), axis, 2 + s, 6, 0, 2 * kPi,
+                                   int(kParallelRelationPoints / 2), 0.05, 40 + s);
+    segments[std::size_t(s)].primitive =
+        fit_primitive(PrimitiveType::Cylinder, p.samples.points, p.samples.normals, p.samples.weights).primitive;
+    segments[std::size_t(s)].points = p.samples.points;
+  }
+  std::vector<Relation> parallel(2);
+  for (int r = 0; r < 2; ++r) {
+    parallel[std::size_t(r)].kind = RelationKind::Parallel;
+    parallel[std::size_t(r)].a = r;
+    parallel[std::size_t(r)].b = r + 1;
+  }
+  const RelationRefit one = refit_with_relations(segments, parallel, 40, 1);
+  const RelationRefit two = refit_with_relations(segments, parallel, 40, 2);
+  ASSERT_TRUE(one.status.ok()) << one.status.error;
+  ASSERT_TRUE(two.status.ok()) << two.status.error;
+  EXPECT_LT(angle_deg(one.primitives[0].axis, one.primitives[2].axis), 1e-6);
+  EXPECT_EQ(one.iterations, two.iterations);
+  for (int s = 0; s < 3; ++s) {
+    EXPECT_EQ(one.primitives[std::size_t(s)].origin, two.primitives[std::size_t(s)].origin) << s;
+    EXPECT_EQ(one.primitives[std::size_t(s)].axis, two.primitives[std::size_t(s)].axis) << s;
+    EXPECT_EQ(one.primitives[std::size_t(s)].radius, two.primitives[std::size_t(s)].radius) << s;
+    EXPECT_EQ(one.rms[std::size_t(s)], two.rms[std::size_t(s)]) << s;
+  }
+}
+
 TEST(Relations, RefusesBadOptionsAndToleratesFreeFormAndNothing)
 {
   const Scene scene = make_part(0.05);
