@@ -307,7 +307,7 @@ int main(int argc, char** argv)
   fit_all.snap_options = snap_options;
   if (fit_runs > 1) {
     const auto t0 = std::chrono::steady_clock::now();
-    surface_roughness(m, build_face_adjacency(m));
+    surface_roughness(m);
     std::printf("roughness (kept on the mesh for the runs below): %.3f s\n", seconds_since(t0));
   }
   std::vector<bracket::BMesh::CoordType> scan_positions;

@@ -61,6 +61,8 @@ struct RelationRefit
 
 // The points in relations from which a refit's passes over them are split between threads.
 constexpr Eigen::Index kParallelRelationPoints = 20000;
+// Levenberg-Marquardt steps a refit takes at most.
+constexpr int kRelationRefitIterations = 40;
 
 namespace relate_detail {
 
@@ -174,7 +176,8 @@ inline bool apply_relation_step(const std::vector<Primitive>& p, const std::vect
 } // namespace relate_detail
 
 inline RelationRefit refit_with_relations(const std::vector<RelatedSegment>& segments,
-                                          const std::vector<Relation>& relations, int max_iterations = 40,
+                                          const std::vector<Relation>& relations,
+                                          int max_iterations = kRelationRefitIterations,
                                           int threads = 1)
 {
   using namespace relate_detail;

@@ -199,9 +199,9 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
 
   // 1. Directions.
   std::vector<Relation> directions = detect_direction_relations(start, info0, angle, options.max_cost_increase, length);
-  RelationRefit first = refit_with_relations(segments, directions, 40, threads);
+  RelationRefit first = refit_with_relations(segments, directions, kRelationRefitIterations, threads);
   if (!first.status)
-    directions.clear(), first = refit_with_relations(segments, directions, 40, threads);
+    directions.clear(), first = refit_with_relations(segments, directions, kRelationRefitIterations, threads);
   // 2. Positions, among the primitives refitted under the directions.
   std::vector<const Primitive*> turned(std::size_t(count), nullptr);
   for (int s = 0; s < count; ++s)
@@ -221,7 +221,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
     std::vector<RelatedSegment> from = segments;
     for (int s = 0; s < count; ++s)
       from[std::size_t(s)].primitive = first.primitives[std::size_t(s)];
-    refit = refit_with_relations(round == 0 ? from : segments, kept, 40, threads);
+    refit = refit_with_relations(round == 0 ? from : segments, kept, kRelationRefitIterations, threads);
     const int worst = refit.status ? worst_segment(refit, info0, start, options.max_cost_increase, length) : -1;
     if ((refit.status && worst < 0) || kept.empty() || round == 8)
       break;
@@ -230,7 +230,7 @@ inline RelatedPrimitives relate_primitives(const std::vector<std::optional<Primi
   if (!refit.status) {
     out.dropped += int(kept.size());
     kept.clear();
-    refit = refit_with_relations(segments, kept, 40, threads);
+    refit = refit_with_relations(segments, kept, kRelationRefitIterations, threads);
   }
   out.relations = kept;
   for (int s = 0; s < count; ++s)

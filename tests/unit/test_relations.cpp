@@ -373,8 +373,8 @@ TEST(Relations, RefitIsTheSameOnAnyThreadCount)
     parallel[std::size_t(r)].a = r;
     parallel[std::size_t(r)].b = r + 1;
   }
-  const RelationRefit one = refit_with_relations(segments, parallel, 40, 1);
-  const RelationRefit two = refit_with_relations(segments, parallel, 40, 2);
+  const RelationRefit one = refit_with_relations(segments, parallel, kRelationRefitIterations, 1);
+  const RelationRefit two = refit_with_relations(segments, parallel, kRelationRefitIterations, 2);
   ASSERT_TRUE(one.status.ok()) << one.status.error;
   ASSERT_TRUE(two.status.ok()) << two.status.error;
   EXPECT_LT(angle_deg(one.primitives[0].axis, one.primitives[2].axis), 1e-6);
