@@ -27,15 +27,7 @@ struct FitResult
 enum class FitMethod { Refined, Direct, DirectRefined };
 constexpr int kFitMethodCount = 3;
 
-inline const char* fit_method_name(FitMethod method)
-{
-  switch (method) {
-  case FitMethod::Refined: return "Refined starts";
-  case FitMethod::Direct: return "Direct (paper)";
-  case FitMethod::DirectRefined: return "Direct, refined";
-  }
-  return "unknown";
-}
+const char* fit_method_name(FitMethod method);
 
 struct FitOptions
 {

@@ -13,12 +13,7 @@
 
 namespace primitive_edit {
 
-inline Eigen::MatrixX3d fit_start_normals(const FitSample& sample)
-{
-  if (sample.normals.rows())
-    return sample.normals;
-  return estimate_normals_from_quadric(sample.points, sample.weights);
-}
+Eigen::MatrixX3d fit_start_normals(const FitSample& sample);
 
 } // namespace primitive_edit
 

@@ -10,17 +10,7 @@
 
 namespace primitive_edit {
 
-inline int minimum_points_for(PrimitiveType type)
-{
-  switch (type) {
-  case PrimitiveType::Plane: return 3;
-  case PrimitiveType::Sphere: return 4;
-  case PrimitiveType::Cylinder: return 6;
-  case PrimitiveType::Cone: return 7;
-  case PrimitiveType::Torus: return 8;
-  }
-  return 3;
-}
+int minimum_points_for(PrimitiveType type);
 
 } // namespace primitive_edit
 
