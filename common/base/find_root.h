@@ -12,14 +12,7 @@
 
 namespace primitive_edit {
 
-inline int find_root(std::vector<int>& parent, int s)
-{
-  while (parent[std::size_t(s)] != s) {
-    parent[std::size_t(s)] = parent[std::size_t(parent[std::size_t(s)])];
-    s = parent[std::size_t(s)];
-  }
-  return s;
-}
+int find_root(std::vector<int>& parent, int s);
 
 } // namespace primitive_edit
 

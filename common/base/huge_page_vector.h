@@ -30,34 +30,13 @@ constexpr std::size_t kHugePageBytes = std::size_t(2) << 20;
 
 // Advises the whole 2 MiB pages among the 4 KiB pages that [data, data + bytes) touches: a buffer that starts
 // 16 bytes into a huge page (glibc's chunk header before it, as huge_page_capacity arranges) gets that page.
-inline void advise_huge_pages(const void* data, std::size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kPage = 4096, kHugePage = kHugePageBytes;
-  const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(data) & ~(kPage - 1);
-  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(data) + bytes + kPage - 1) & ~(kPage - 1);
-  const std::uintptr_t begin = (first + kHugePage - 1) & ~(kHugePage - 1);
-  const std::uintptr_t end = last & ~(kHugePage - 1);
-  if (begin < end)
-    (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE); // advice: a refusal is harmless
-#else
-  (void)data;
-  (void)bytes;
-#endif
-}
+void advise_huge_pages(const void* data, std::size_t bytes);
 
 // The capacity to reserve for n elements of `size` bytes: n under 2 MiB; above, as many elements as fill a
 // whole number of 2 MiB pages less glibc's 32 bytes of chunk overhead. glibc then maps exactly whole huge
 // pages, which Linux (6.7 on) places on a 2 MiB boundary, so no 4 KiB-paged head or tail is left outside the
 // advice (elsewhere this costs under 2 MiB an array).
-inline std::size_t huge_page_capacity(std::size_t n, std::size_t size)
-{
-  constexpr std::size_t kMallocOverhead = 32;
-  if (n * size < kHugePageBytes)
-    return n;
-  const std::size_t pages = (n * size + kMallocOverhead + kHugePageBytes - 1) / kHugePageBytes;
-  return (pages * kHugePageBytes - kMallocOverhead) / size;
-}
+std::size_t huge_page_capacity(std::size_t n, std::size_t size);
 
 // v can take n elements without reallocating; a buffer it must replace for that is advised. Its contents
 // stay only when no new buffer was needed (callers fill it next).

@@ -18,10 +18,7 @@
 namespace primitive_edit {
 
 // The threads a "threads" parameter asks for: itself when positive, else every hardware thread.
-inline int resolve_thread_count(int threads)
-{
-  return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-}
+int resolve_thread_count(int threads);
 
 template <class Body>
 void parallel_for(std::size_t count, int threads, std::size_t grain, const Body& body)

@@ -15,20 +15,10 @@ namespace primitive_edit {
 using Progress = std::function<bool(int percent, const char* what)>;
 
 // Reports to an optional callback; true when the operation should go on.
-inline bool report_progress(const Progress& progress, int percent, const char* what)
-{
-  return !progress || progress(percent < 0 ? 0 : (percent > 100 ? 100 : percent), what);
-}
+bool report_progress(const Progress& progress, int percent, const char* what);
 
 // The part [begin, end] of a caller's percent range, for an operation run as one step of a longer one.
-inline Progress progress_range(const Progress& progress, int begin, int end)
-{
-  if (!progress)
-    return {};
-  return [progress, begin, end](int percent, const char* what) {
-    return progress(begin + (end - begin) * percent / 100, what);
-  };
-}
+Progress progress_range(const Progress& progress, int begin, int end);
 
 } // namespace primitive_edit
 

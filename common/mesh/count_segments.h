@@ -9,13 +9,7 @@
 
 namespace primitive_edit {
 
-inline int count_segments(const std::vector<int>& segment_of_face)
-{
-  int k = 0;
-  for (int s : segment_of_face)
-    k = std::max(k, s + 1);
-  return k;
-}
+int count_segments(const std::vector<int>& segment_of_face);
 
 } // namespace primitive_edit
 

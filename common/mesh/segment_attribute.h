@@ -58,12 +58,7 @@ bool has_int_face_attribute(const MeshType& m, const std::string& name)
 }
 
 // Compacts ids read from the mesh; true when that changed any of them.
-inline bool compact_stored_ids(std::vector<int>& segment_of_face)
-{
-  const std::vector<int> stored = segment_of_face;
-  compact_segment_ids(segment_of_face);
-  return stored != segment_of_face;
-}
+bool compact_stored_ids(std::vector<int>& segment_of_face);
 
 } // namespace detail
 

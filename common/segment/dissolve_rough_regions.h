@@ -17,43 +17,8 @@
 
 namespace primitive_edit {
 
-inline int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                                  GrowingRegions& regions)
-{
-  std::vector<int>& label = regions.label;
-  const int count = int(regions.primitive.size());
-  std::vector<int> by_size;
-  for (int r = 0; r < count; ++r)
-    if (!regions.faces[std::size_t(r)].empty())
-      by_size.push_back(r);
-  std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
-    return regions.faces[std::size_t(a)].size() < regions.faces[std::size_t(b)].size();
-  });
-  std::vector<int> neighbours;
-  int dissolved = 0;
-  for (int r : by_size) {
-    std::vector<int>& faces = regions.faces[std::size_t(r)];
-    neighbours.clear();
-    for (int f : faces)
-      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
-        const int q = label[std::size_t(adj.neighbour[std::size_t(k)])];
-        if (q >= 0 && q != r && regions.faces[std::size_t(q)].size() > faces.size())
-          neighbours.push_back(q);
-      }
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-    for (int q : neighbours)
-      if (sampled_share(g, regions.primitive[std::size_t(q)], faces, 2.0 * scale.tolerance, scale.angle) >=
-          kMergeShare) {
-        for (int f : faces)
-          label[std::size_t(f)] = -1;
-        std::vector<int>().swap(faces);
-        ++dissolved;
-        break;
-      }
-  }
-  return dissolved;
-}
+int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
+                           GrowingRegions& regions);
 
 } // namespace primitive_edit
 

@@ -68,40 +68,16 @@ struct NoiseScaledNormals
 };
 
 // The passes the noise calls for (0: no more than the paper's).
-inline int noise_smoothing_passes(double noise, double mean_face_area)
-{
-  if (!(noise > 0) || !(mean_face_area > 0) || !std::isfinite(noise / mean_face_area))
-    return 0;
-  const double passes = std::ceil(kNoisePassesPerSquaredRatio * noise * noise / mean_face_area);
-  return passes <= kPaperSmoothingPasses ? 0 : int(std::min(passes, double(kMaxNoisePasses)));
-}
+int noise_smoothing_passes(double noise, double mean_face_area);
 
 // The turn between neighbouring faces, in degrees, beyond which a face lies on an edge after `passes` passes.
-inline double edge_turn_deg(double angle_deg, int passes)
-{
-  return angle_deg / std::sqrt(std::max(1.0, 0.75 * kPi * double(passes)));
-}
+double edge_turn_deg(double angle_deg, int passes);
 
 // The median, over faces, of the RMS distance of a face's neighbours' centroids from its plane: 0 on a mesh
 // whose surfaces are planes between sharp edges (most faces lie flat among their neighbours), however small;
 // there a quadric patch of kNoisePatchFaces faces may find no side large enough and read the edges as noise.
-inline double median_ring_plane_residual(const FaceCentroidsAndAreas& faces, const std::vector<Eigen::Vector3d>& raw,
-                                         const FaceAdjacency& adj)
-{
-  std::vector<double> residual;
-  for (std::size_t f = 0; f < raw.size(); ++f) {
-    if (!(faces.area[f] > 0) || raw[f].isZero(0.0) || adj.offset[f] == adj.offset[f + 1])
-      continue;
-    double sum = 0;
-    for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k)
-      sum += std::pow((faces.centroid[std::size_t(adj.neighbour[std::size_t(k)])] - faces.centroid[f]).dot(raw[f]), 2);
-    residual.push_back(std::sqrt(sum / double(adj.offset[f + 1] - adj.offset[f])));
-  }
-  if (residual.empty())
-    return 0;
-  std::nth_element(residual.begin(), residual.begin() + std::ptrdiff_t(residual.size() / 2), residual.end());
-  return residual[residual.size() / 2];
-}
+double median_ring_plane_residual(const FaceCentroidsAndAreas& faces, const std::vector<Eigen::Vector3d>& raw,
+                                  const FaceAdjacency& adj);
 
 template <class MeshType>
 NoiseScaledNormals noise_scaled_normals(const MeshType& m, const FaceAdjacency& adj, double angle_deg, int threads = 0)

@@ -68,15 +68,8 @@ struct RepairFoldsReport
 };
 
 // The fold test shared with snap_segments' guard: `reference` is the face's edge cross product before snapping.
-inline bool face_is_folded(const Eigen::Vector3d& reference, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                           const Eigen::Vector3d& p2)
-{
-  const double before = reference.norm();
-  if (!std::isfinite(before) || before <= 0)
-    return false;
-  const Eigen::Vector3d after = (p1 - p0).cross(p2 - p0);
-  return !(reference.dot(after) > 0) || !(after.norm() > 1e-3 * before);
-}
+bool face_is_folded(const Eigen::Vector3d& reference, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                    const Eigen::Vector3d& p2);
 
 namespace repair_detail {
 

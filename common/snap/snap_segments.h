@@ -81,12 +81,7 @@ struct SnapOptions
 };
 
 // The options for snapping onto primitives fitted to the scan (Fit All; see wide_repair).
-inline SnapOptions fitted_snap_options()
-{
-  SnapOptions options;
-  options.wide_repair = false;
-  return options;
-}
+SnapOptions fitted_snap_options();
 
 struct SnapReport
 {
