@@ -1,5 +1,5 @@
 """Checks the core's architecture: common/ is split into rooms by layer, and a room may include only
-itself and the rooms below it; the core includes no Qt or MeshLab header; and no file of ours shadows a
+itself and the rooms below it (headers and sources alike); every source X.cpp has its header X.h; the core includes no Qt or MeshLab header; and no file of ours shadows a
 file of MeshLab's own common/ (both are included as "common/..."), for every MeshLab source given.
 
 Usage: check_layers.py REPO_ROOT [MESHLAB_SRC_DIR ...]     (prints "N passed, N failed")
@@ -26,12 +26,14 @@ def main():
             path = os.path.join(dirpath, name)
             rel = os.path.relpath(path, root)
             parts = rel.split(os.sep)
-            if not name.endswith(".h"):
+            if not name.endswith((".h", ".cpp")):
                 continue
             checked += 1
             if len(parts) != 3 or parts[1] not in ROOMS:
-                failures.append("%s: a core header must sit in one of the rooms %s" % (rel, ROOMS))
+                failures.append("%s: a core file must sit in one of the rooms %s" % (rel, ROOMS))
                 continue
+            if name.endswith(".cpp") and not os.path.exists(path[:-len(".cpp")] + ".h"):
+                failures.append("%s: a core source defines what the header of its name declares" % rel)
             room = parts[1]
             with open(path, encoding="utf-8") as f:
                 text = f.read()
