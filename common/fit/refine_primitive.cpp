@@ -4,18 +4,6 @@ namespace primitive_edit {
 
 namespace refine_detail {
 
-int parameter_count(PrimitiveType t)
-{
-  switch (t) {
-  case PrimitiveType::Plane: return 3;
-  case PrimitiveType::Sphere: return 4;
-  case PrimitiveType::Cylinder: return 5;
-  case PrimitiveType::Cone: return 6;
-  case PrimitiveType::Torus: return 7;
-  }
-  return 0;
-}
-
 LocalFrame local_frame(const Primitive& p)
 {
   LocalFrame f;
@@ -157,7 +145,7 @@ double normal_equations(const Primitive& p, const Eigen::MatrixX3d& points, cons
 Primitive levenberg_marquardt(Primitive p, const Eigen::MatrixX3d& points, const Eigen::VectorXd& w,
                               int max_iterations, double exact_rms)
 {
-  const int k = parameter_count(p.type);
+  const int k = primitive_degrees_of_freedom(p.type);
   Mat7 JtJ;
   Vec7 Jtr;
   double cost = normal_equations(p, points, w, &JtJ, &Jtr);
@@ -260,7 +248,7 @@ FitResult refine_primitive(const Primitive& start, const Eigen::MatrixX3d& point
   if (options.robust) {
     // Residuals below this are round-off: never reject points for them (exact data).
     const double floor = 1e-9 * std::max(extent, 1e-300);
-    const Eigen::Index min_kept = parameter_count(p.type) + 1;
+    const Eigen::Index min_kept = primitive_degrees_of_freedom(p.type) + 1;
     // Wide first rounds let a rough start pull in its inliers before the tight rounds.
     const double widths[] = {4.0, 2.0, 1.0, 1.0, 1.0, 1.0};
     // A start that is already the robust fit of a subsample (refine_best_start.h) needs no wide rounds.

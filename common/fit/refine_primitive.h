@@ -42,8 +42,6 @@ namespace refine_detail {
 using Vec7 = Eigen::Matrix<double, 7, 1>;
 using Mat7 = Eigen::Matrix<double, 7, 7>;
 
-int parameter_count(PrimitiveType t);
-
 // What residual() needs of a primitive besides its parameters, computed once per pass over the points:
 // the basis e1, e2 orthogonal to the axis that the local parameters turn it along, and the cone's
 // cos/sin of the half angle.

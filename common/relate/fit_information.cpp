@@ -22,7 +22,7 @@ FitInformation fit_information(const Primitive& p, const Eigen::MatrixX3d& point
   Vec7 Jtr;
   out.cost = normal_equations(p, points, w, &JtJ, &Jtr);
   out.weight = w.sum();
-  const int k = parameter_count(p.type);
+  const int k = primitive_degrees_of_freedom(p.type);
   out.H = JtJ.topLeftCorner(k, k);
   const LocalFrame frame = local_frame(p);
   out.e1 = frame.e1;

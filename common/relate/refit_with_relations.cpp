@@ -42,7 +42,7 @@ int relation_unknowns(const std::vector<RelatedSegment>& segments, const std::ve
     for (int s : {r.a, r.b})
       if (!segments[std::size_t(s)].fixed && offset[std::size_t(s)] < 0) {
         offset[std::size_t(s)] = n;
-        n += refine_detail::parameter_count(segments[std::size_t(s)].primitive.type);
+        n += primitive_degrees_of_freedom(segments[std::size_t(s)].primitive.type);
       }
   return n;
 }
@@ -73,7 +73,7 @@ double relation_data_term(const std::vector<RelatedSegment>& segments,
       Mat7 JtJ;
       Vec7 Jtr;
       cost_of[s] = normal_equations(q[s], segments[s].points, weights[s], &JtJ, &Jtr);
-      const int k = parameter_count(q[s].type);
+      const int k = primitive_degrees_of_freedom(q[s].type);
       block_of[s] = {JtJ.topLeftCorner(k, k), Jtr.head(k), offset[s]};
     }
   });
@@ -98,7 +98,7 @@ bool apply_relation_step(const std::vector<Primitive>& p, const std::vector<int>
     const Primitive& base = p[s];
     const Eigen::Vector3d e1 = any_orthogonal(base.axis), e2 = base.axis.cross(e1);
     Vec7 d = Vec7::Zero();
-    d.head(parameter_count(base.type)) = delta.segment(offset[s], parameter_count(base.type));
+    d.head(primitive_degrees_of_freedom(base.type)) = delta.segment(offset[s], primitive_degrees_of_freedom(base.type));
     if (!apply_step(base, e1, e2, d, &trial[s]))
       return false;
   }

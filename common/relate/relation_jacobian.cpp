@@ -42,7 +42,7 @@ Eigen::MatrixXd relation_jacobian(const std::vector<Relation>& relations, const 
         continue;
       const Primitive& base = p[std::size_t(s)];
       const Eigen::Vector3d e1 = any_orthogonal(base.axis), e2 = base.axis.cross(e1);
-      for (int j = 0; j < parameter_count(base.type); ++j) {
+      for (int j = 0; j < primitive_degrees_of_freedom(base.type); ++j) {
         double span = 0;
         for (const double sign : {1.0, -1.0}) {
           Vec7 step = Vec7::Zero();

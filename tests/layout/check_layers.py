@@ -1,6 +1,7 @@
 """Checks the core's architecture: common/ is split into rooms by layer, and a room may include only
-itself and the rooms below it (headers and sources alike); every source X.cpp has its header X.h; the core includes no Qt or MeshLab header; and no file of ours shadows a
-file of MeshLab's own common/ (both are included as "common/..."), for every MeshLab source given.
+itself and the rooms below it (headers and sources alike); every source X.cpp has its header X.h; the
+core includes no Qt or MeshLab header; and no file of ours shadows a file of MeshLab's own common/ (both
+are included as "common/..."), for every MeshLab source given.
 
 Usage: check_layers.py REPO_ROOT [MESHLAB_SRC_DIR ...]     (prints "N passed, N failed")
 """
