@@ -27,11 +27,12 @@ namespace grow_detail {
 
 void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale, int id,
                          Primitive& prim, std::size_t& fitted_size, std::vector<int>& region,
-                         std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue)
+                         std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue,
+                         std::vector<int>& open_faces)
 {
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
   const FaceAgreement agrees(scale.tolerance, scale.angle);
-  std::vector<int> open_faces = region;
+  open_faces = region;
   for (;;) {
     const int grow_mark = ++stamps.mark;
     queue.swap(open_faces);
@@ -71,25 +72,29 @@ void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const 
 }
 
 std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                                    int id, const Primitive& prim, const std::vector<int>& region,
-                                    const std::vector<int>& label, FaceStamps& stamps, std::vector<int>& band)
+                                    const Primitive& prim, const std::vector<int>& region,
+                                    const std::vector<int>& open_faces, const std::vector<int>& label,
+                                    FaceStamps& stamps, std::vector<int>& band)
 {
-  bfs_patch(adj, region, region.size() + region.size() / 2, [&](int f) { return label[std::size_t(f)] == id; },
-            stamps, band);
-  const int mark = stamps.mark;
+  const int mark = ++stamps.mark;
+  band = region;
   const std::size_t inner = band.size();
-  for (int ring = 0, begin = 0; ring < kBandRings; ++ring) {
-    const int end = int(band.size());
-    for (int i = begin; i < end; ++i) {
-      const int f = band[std::size_t(i)];
-      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
-        const int h = adj.neighbour[std::size_t(k)];
-        if (stamps.stamp[std::size_t(h)] != mark && g.valid[std::size_t(h)] && label[std::size_t(h)] < 0) {
-          stamps.stamp[std::size_t(h)] = mark;
-          band.push_back(h);
-        }
+  auto add_unassigned_neighbours = [&](int f) {
+    for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
+      const int h = adj.neighbour[std::size_t(k)];
+      if (stamps.stamp[std::size_t(h)] != mark && g.valid[std::size_t(h)] && label[std::size_t(h)] < 0) {
+        stamps.stamp[std::size_t(h)] = mark;
+        band.push_back(h);
       }
     }
+  };
+  // The first ring: only the open faces have unassigned neighbours, and they are in region order.
+  for (int f : open_faces)
+    add_unassigned_neighbours(f);
+  for (std::size_t ring = 1, begin = inner; ring < std::size_t(kBandRings); ++ring) {
+    const std::size_t end = band.size();
+    for (std::size_t i = begin; i < end; ++i)
+      add_unassigned_neighbours(band[i]);
     begin = end;
   }
   if (band.size() == inner)
@@ -114,7 +119,7 @@ GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, con
   FaceStamps stamps;
   assign_on_huge_pages(stamps.stamp, face_count, 0);
   const std::vector<int> order = scale.tolerance > 0 ? seed_order(g, adj) : std::vector<int>();
-  std::vector<int> patch, region, queue, band;
+  std::vector<int> patch, region, queue, open_faces, band;
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
   std::size_t processed = 0;
   for (int seed : order) {
@@ -137,10 +142,10 @@ GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, con
     label[std::size_t(seed)] = id;
     std::size_t fitted_size = patch.size();
     for (int type_changes = 0;; ++type_changes) {
-      grow_while_agreeing(g, adj, scale, id, *prim, fitted_size, region, label, stamps, queue);
+      grow_while_agreeing(g, adj, scale, id, *prim, fitted_size, region, label, stamps, queue, open_faces);
       if (type_changes >= 2 || int(region.size()) < scale.min_region_faces)
         break;
-      const std::optional<Primitive> wider = wider_type(g, adj, scale, id, *prim, region, label, stamps, band);
+      const std::optional<Primitive> wider = wider_type(g, adj, scale, *prim, region, open_faces, label, stamps, band);
       if (!wider)
         break;
       prim = wider;

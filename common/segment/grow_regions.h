@@ -89,18 +89,22 @@ namespace grow_detail {
 
 // Grows region `id` breadth-first (after a refit, faces rejected before may agree) over unassigned faces that
 // agree with prim, refitting it each time the region has grown by half since the last fit. Returns when a walk
-// ends without that growth. Each walk starts from the region's faces that still had an unassigned neighbour
-// after the walk before, in region order, so it adds the same faces in the same order as a walk from the whole
-// region, without rescanning its inside (the region's labels only grow, so a face once closed stays closed).
+// ends without that growth, with open_faces: the region's faces that have an unassigned neighbour, in region
+// order. Each walk starts from the open faces of the walk before, so it adds the same faces in the same order as
+// a walk from the whole region, without rescanning its inside (the region's labels only grow, so a face once
+// closed stays closed).
 void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale, int id,
                          Primitive& prim, std::size_t& fitted_size, std::vector<int>& region,
-                         std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue);
+                         std::vector<int>& label, FaceStamps& stamps, std::vector<int>& queue,
+                         std::vector<int>& open_faces);
 
 // A primitive of another type than `prim` that the stopped region and kBandRings rings of unassigned faces
-// around it agree with (95%), or nullopt.
+// around it agree with (95%), or nullopt. The band is the region followed by its rings, the first ring walked
+// from the region's open faces (grow_while_agreeing) rather than from all of its faces.
 std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                                    int id, const Primitive& prim, const std::vector<int>& region,
-                                    const std::vector<int>& label, FaceStamps& stamps, std::vector<int>& band);
+                                    const Primitive& prim, const std::vector<int>& region,
+                                    const std::vector<int>& open_faces, const std::vector<int>& label,
+                                    FaceStamps& stamps, std::vector<int>& band);
 
 } // namespace grow_detail
 
