@@ -14,18 +14,6 @@ const char* primitive_type_name(PrimitiveType type)
   return "Unknown";
 }
 
-int primitive_degrees_of_freedom(PrimitiveType type)
-{
-  switch (type) {
-  case PrimitiveType::Plane: return 3;
-  case PrimitiveType::Sphere: return 4;
-  case PrimitiveType::Cylinder: return 5;
-  case PrimitiveType::Cone: return 6;
-  case PrimitiveType::Torus: return 7;
-  }
-  return 0;
-}
-
 bool primitive_is_valid(const Primitive& p)
 {
   if (!p.origin.allFinite() || !p.axis.allFinite() || !std::isfinite(p.radius) ||

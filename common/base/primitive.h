@@ -32,8 +32,19 @@ struct Primitive
 
 const char* primitive_type_name(PrimitiveType type);
 
-// Number of free parameters of each type (used to penalise richer models when choosing a type).
-int primitive_degrees_of_freedom(PrimitiveType type);
+// Number of free parameters of each type (used to penalise richer models when choosing a type, and as the size
+// of the refinement's normal equations, at compile time).
+constexpr int primitive_degrees_of_freedom(PrimitiveType type)
+{
+  switch (type) {
+  case PrimitiveType::Plane: return 3;
+  case PrimitiveType::Sphere: return 4;
+  case PrimitiveType::Cylinder: return 5;
+  case PrimitiveType::Cone: return 6;
+  case PrimitiveType::Torus: return 7;
+  }
+  return 0;
+}
 
 // True when every number of the primitive is finite and its sizes and axis are valid for its type.
 bool primitive_is_valid(const Primitive& p);

@@ -60,7 +60,9 @@ double residual(const Primitive& p, const LocalFrame& frame, const Eigen::Vector
 bool apply_step(const Primitive& p, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2, const Vec7& d,
                 Primitive* out);
 
-// Cost sum w r^2 and the normal equations J^T W J, J^T W r at p, in one pass.
+// Cost sum w r^2 and the normal equations J^T W J, J^T W r at p, in one pass. Only the leading block of the type's
+// primitive_degrees_of_freedom parameters can be non-zero (the Jacobian's other entries are 0), and only it is
+// accumulated.
 double normal_equations(const Primitive& p, const Eigen::MatrixX3d& points, const Eigen::VectorXd& w,
                         Mat7* JtJ, Vec7* Jtr);
 
