@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace primitive_edit {
@@ -57,15 +58,17 @@ std::vector<Eigen::Vector3d> smooth_face_normals(const MeshType& m, const FaceAd
   std::vector<Eigen::Vector3d> next = huge_page_vector<Eigen::Vector3d>(face_count);
   // Below this many faces a second thread costs more than it saves.
   constexpr std::size_t kFacesPerThread = 20000;
-  for (int pass = 0; pass < iterations; ++pass) {
+  // The crease test is a template argument, so that the ungated passes (the segmentation's) have no test at all.
+  auto smooth = [&](auto gate) {
+    constexpr bool kGated = decltype(gate)::value;
     parallel_for(face_count, threads, kFacesPerThread, [&](std::size_t begin, std::size_t end) {
       for (std::size_t f = begin; f < end; ++f) {
         const Eigen::Vector3d& own = normal[f];
-        const bool has_own = !own.isZero(0.0);
+        const bool has_own = kGated && !own.isZero(0.0);
         Eigen::Vector3d sum = area[f] * own;
         for (int i = adj.offset[f]; i < adj.offset[f + 1]; ++i) {
           const std::size_t g = std::size_t(adj.neighbour[std::size_t(i)]);
-          if (gated && has_own && own.dot(normal[g]) <= min_cos)
+          if (kGated && has_own && own.dot(normal[g]) <= min_cos)
             continue;
           sum += area[g] * normal[g];
         }
@@ -76,6 +79,12 @@ std::vector<Eigen::Vector3d> smooth_face_normals(const MeshType& m, const FaceAd
           next[f] = own;
       }
     });
+  };
+  for (int pass = 0; pass < iterations; ++pass) {
+    if (gated)
+      smooth(std::true_type());
+    else
+      smooth(std::false_type());
     normal.swap(next);
   }
   return normal;
