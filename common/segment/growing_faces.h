@@ -5,6 +5,7 @@
 // Output: GrowingFaces: per face the centroid, the area, the smoothed normal (smooth_face_normals.h) and
 //         `valid` (a finite centroid, a defined normal and a positive area; other faces never seed, grow or
 //         count in a share). Then the tests the phases share:
+//         face_near_primitive the centroid's distance to a primitive and the normals' |cosine| (planes directly);
 //         FaceAgreement    whether a face agrees with a primitive: the centroid within tol of it and the
 //                          normal within the angle of the primitive's normal there (either side), the angle
 //                          widened linearly to twice its value as the distance goes to 0: on a rough scan the
@@ -94,6 +95,21 @@ inline void face_samples(const GrowingFaces& g, const std::vector<int>& faces, i
   face_samples(g, faces, {}, max_count, points, normals, weights);
 }
 
+// The distance of a face's centroid c to prim and the |cosine| between its normal n and prim's normal there. A
+// plane, most regions' primitive, skips the projection's switch and closest point: the same two numbers.
+struct FaceNearPrimitive
+{
+  double distance, cosine;
+};
+
+inline FaceNearPrimitive face_near_primitive(const Primitive& prim, const Eigen::Vector3d& c, const Eigen::Vector3d& n)
+{
+  if (prim.type == PrimitiveType::Plane)
+    return {std::abs((c - prim.origin).dot(prim.axis)), std::abs(prim.axis.dot(n))};
+  const PrimitiveProjection pr = project_onto_primitive(prim, c);
+  return {std::abs(pr.signed_distance), std::abs(pr.normal.dot(n))};
+}
+
 // The cosines of the angle bounds are computed once per loop: a normal within the angle agrees
 // at any distance within tol and one beyond twice the angle at none, so only the faces between need acos (it
 // took 5% of the segmentation). The 1e-9 margins keep every decision the one acos alone gives.
@@ -107,11 +123,11 @@ public:
   }
   bool operator()(const GrowingFaces& g, const Primitive& prim, int f) const
   {
-    const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
-    const double d = std::abs(pr.signed_distance);
+    const FaceNearPrimitive near = face_near_primitive(prim, g.centroid[std::size_t(f)], g.normal[std::size_t(f)]);
+    const double d = near.distance;
     if (!(d <= tol_))
       return false;
-    const double c = std::min(1.0, std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+    const double c = std::min(1.0, near.cosine);
     if (c > always_)
       return true;
     if (c < never_)
@@ -177,8 +193,8 @@ inline double face_cost(const GrowingFaces& g, const Primitive& prim, int f, dou
 {
   if (!g.valid[std::size_t(f)])
     return std::numeric_limits<double>::max();
-  const PrimitiveProjection pr = project_onto_primitive(prim, g.centroid[std::size_t(f)]);
-  return std::abs(pr.signed_distance) + tol * (1.0 - std::abs(pr.normal.dot(g.normal[std::size_t(f)])));
+  const FaceNearPrimitive near = face_near_primitive(prim, g.centroid[std::size_t(f)], g.normal[std::size_t(f)]);
+  return near.distance + tol * (1.0 - near.cosine);
 }
 
 inline double curvature_radius(const Primitive& p)
