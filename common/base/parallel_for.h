@@ -20,6 +20,10 @@ namespace primitive_edit {
 // The threads a "threads" parameter asks for: itself when positive, else every hardware thread.
 int resolve_thread_count(int threads);
 
+// The grain of a pass that does a few arithmetic operations per face of a mesh: below this many faces a second
+// thread costs more than it saves.
+constexpr std::size_t kFacesPerThread = 20000;
+
 template <class Body>
 void parallel_for(std::size_t count, int threads, std::size_t grain, const Body& body)
 {

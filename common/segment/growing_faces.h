@@ -55,8 +55,9 @@ GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoo
 {
   GrowingFaces g;
   const std::size_t n = m.face.size();
-  g.normal = smooth_face_normals(m, adj, std::max(0, smoothing_iterations), 180.0, threads);
-  FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  std::vector<Eigen::Vector3d> raw;
+  FaceCentroidsAndAreas faces = face_centroids_and_areas(m, threads, &raw);
+  g.normal = smooth_face_normals(std::move(raw), faces.area, adj, std::max(0, smoothing_iterations), 180.0, threads);
   g.centroid = std::move(faces.centroid);
   g.area = std::move(faces.area);
   assign_on_huge_pages(g.valid, n, char(0));

@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace primitive_edit {
@@ -83,7 +84,8 @@ template <class MeshType>
 NoiseScaledNormals noise_scaled_normals(const MeshType& m, const FaceAdjacency& adj, double angle_deg, int threads = 0)
 {
   NoiseScaledNormals out;
-  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  std::vector<Eigen::Vector3d> raw;
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m, threads, &raw);
   double area_sum = 0;
   int usable = 0;
   for (double a : faces.area)
@@ -92,12 +94,12 @@ NoiseScaledNormals noise_scaled_normals(const MeshType& m, const FaceAdjacency& 
       ++usable;
     }
   const double quadric = measure_surface_roughness(faces.centroid, faces.area, adj, kNoisePatchFaces, threads).noise;
-  out.noise = std::min(quadric, median_ring_plane_residual(faces, smooth_face_normals(m, adj, 0), adj));
+  out.noise = std::min(quadric, median_ring_plane_residual(faces, raw, adj));
   out.passes = usable > 0 ? noise_smoothing_passes(out.noise, area_sum / usable) : 0;
   out.edge_face.assign(m.face.size(), 0);
   if (out.passes == 0)
     return out;
-  out.normal = smooth_face_normals(m, adj, out.passes, 180.0, threads);
+  out.normal = smooth_face_normals(std::move(raw), faces.area, adj, out.passes, 180.0, threads);
   const double min_cos = std::cos(radians_from_degrees(edge_turn_deg(angle_deg, out.passes)));
   for (std::size_t f = 0; f < m.face.size(); ++f)
     for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k)
