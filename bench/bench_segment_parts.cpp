@@ -250,7 +250,7 @@ int main(int argc, char** argv)
     for (const int t : thread_counts) {
       params.threads = t;
       const auto t0 = std::chrono::steady_clock::now();
-      const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m);
+      const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m, t);
       const auto t1 = std::chrono::steady_clock::now();
       if (normal_angle) {
         K = primitive_edit::segment_by_normal_angle(m, adj, normal_params, segment);

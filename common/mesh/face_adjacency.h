@@ -1,6 +1,7 @@
 // face_adjacency.h: which faces of a triangle mesh share an edge, as a compressed (CSR) table.
 //
-// Input:  a vcg triangle mesh (any MeshType; no adjacency component needed: CMeshO's FFAdj is optional).
+// Input:  a vcg triangle mesh (any MeshType; no adjacency component needed: CMeshO's FFAdj is optional), or the
+//         vertex indices of its faces; the threads (parallel_for.h; <= 0: all).
 // Output: FaceAdjacency; the neighbours of face f (f = vcg::tri::Index(m, face)) are
 //         neighbour[offset[f] .. offset[f+1]). Two faces are neighbours when they share an edge, i.e. both
 //         endpoints. A non-manifold edge links all of its faces to each other; a neighbour is listed once
@@ -8,10 +9,13 @@
 //         to itself link nothing. Faces with a null or out-of-range vertex pointer are treated as isolated.
 // Complexity: O(F + sum over face edges of the valence of one endpoint), i.e. linear for bounded valence.
 //         Vertex->face incidence is built by a counting sort (vertex_faces.h); no per-face heap allocation, no maps.
+//         The faces' vertex indices and their neighbours are found by the threads over contiguous ranges of
+//         faces, each range's lists joined in face order: the same table for every thread count.
 #ifndef PRIMITIVE_EDIT_FACE_ADJACENCY_H
 #define PRIMITIVE_EDIT_FACE_ADJACENCY_H
 
 #include "common/base/huge_page_vector.h"
+#include "common/base/parallel_for.h"
 #include "common/mesh/vertex_faces.h"
 
 #include <vcg/complex/complex.h>
@@ -52,71 +56,32 @@ bool face_corner_indices(const MeshType& m, std::size_t f, int idx[3])
 
 // Vertex indices of every face, 3 per face; -1 for deleted faces and faces with invalid vertex pointers.
 template <class MeshType>
-std::vector<int> face_vertex_indices(const MeshType& m)
+std::vector<int> face_vertex_indices(const MeshType& m, int threads = 0)
 {
   const std::size_t face_count = m.face.size();
   std::vector<int> fv = huge_page_vector(3 * face_count, -1);
-  for (std::size_t f = 0; f < face_count; ++f) {
-    int idx[3];
-    if (face_corner_indices(m, f, idx))
-      for (int k = 0; k < 3; ++k)
-        fv[3 * f + k] = idx[k];
-  }
+  parallel_for(face_count, threads, kFacesPerThread, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      int idx[3];
+      if (face_corner_indices(m, f, idx))
+        for (int k = 0; k < 3; ++k)
+          fv[3 * f + k] = idx[k];
+    }
+  });
   return fv;
 }
 
 } // namespace detail
 
+// The adjacency of faces given by their vertex indices (3 per face, as detail::face_vertex_indices gives them:
+// a face whose first index is negative links nothing, the others' indices lie in [0, vertex_count)).
+FaceAdjacency face_adjacency_from_corners(const std::vector<int>& face_vertex, std::size_t vertex_count,
+                                          int threads = 0);
+
 template <class MeshType>
-FaceAdjacency build_face_adjacency(const MeshType& m)
+FaceAdjacency build_face_adjacency(const MeshType& m, int threads = 0)
 {
-  const int face_count = int(m.face.size());
-  const int vertex_count = int(m.vert.size());
-  const std::vector<int> fv = detail::face_vertex_indices(m);
-
-  // A face with a repeated vertex is listed once per corner; the duplicate check below makes that harmless.
-  const VertexFaces incident = build_vertex_faces(fv, std::size_t(vertex_count));
-  const std::vector<int>& vf_offset = incident.offset;
-  const std::vector<int>& vf = incident.face;
-
-  FaceAdjacency adj;
-  assign_on_huge_pages(adj.offset, std::size_t(face_count) + 1, 0);
-  reserve_on_huge_pages(adj.neighbour, 3 * std::size_t(face_count));
-  for (int f = 0; f < face_count; ++f) {
-    adj.offset[std::size_t(f)] = int(adj.neighbour.size());
-    const int* corners = &fv[3 * std::size_t(f)];
-    if (corners[0] < 0)
-      continue;
-    const std::size_t first = adj.neighbour.size();
-    for (int k = 0; k < 3; ++k) {
-      int a = corners[k];
-      int b = corners[(k + 1) % 3];
-      if (a == b)
-        continue;
-      // Scan the shorter incidence list of the two endpoints.
-      if (vf_offset[std::size_t(a) + 1] - vf_offset[std::size_t(a)] >
-          vf_offset[std::size_t(b) + 1] - vf_offset[std::size_t(b)])
-        std::swap(a, b);
-      for (int i = vf_offset[std::size_t(a)]; i < vf_offset[std::size_t(a) + 1]; ++i) {
-        const int g = vf[std::size_t(i)];
-        if (g == f)
-          continue;
-        const int* gc = &fv[3 * std::size_t(g)];
-        if (gc[0] != b && gc[1] != b && gc[2] != b)
-          continue;
-        bool listed = false;
-        for (std::size_t j = first; j < adj.neighbour.size(); ++j)
-          if (adj.neighbour[j] == g) {
-            listed = true;
-            break;
-          }
-        if (!listed)
-          adj.neighbour.push_back(g);
-      }
-    }
-  }
-  adj.offset[std::size_t(face_count)] = int(adj.neighbour.size());
-  return adj;
+  return face_adjacency_from_corners(detail::face_vertex_indices(m, threads), m.vert.size(), threads);
 }
 
 } // namespace primitive_edit

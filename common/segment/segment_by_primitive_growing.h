@@ -241,7 +241,7 @@ int segment_by_primitive_growing(const MeshType& m, const SegmentByPrimitiveGrow
                                  const Progress& progress = {})
 {
   report_progress(progress, 0, "Building face adjacency");
-  const FaceAdjacency adj = build_face_adjacency(m);
+  const FaceAdjacency adj = build_face_adjacency(m, params.threads);
   return segment_by_primitive_growing(m, adj, params, segment_of_face, report, progress);
 }
 

@@ -97,16 +97,26 @@ TEST(EstimateSurfaceRoughness, NoiseOnCylindersDoesNotGrowWithCurvature)
 }
 
 // Threads share the patches and the faces, never a result: every thread count gives the same figures, bit for
-// bit (120k faces: normal smoothing splits them between threads).
+// bit (120k faces: the face tables, the adjacency and normal smoothing split them between threads). Some faces are
+// deleted, so that the ranges hold faces that link nothing.
 TEST(EstimateSurfaceRoughness, SameOnEveryThreadCount)
 {
   test_mesh::TMesh m;
   make_noisy_cylinder(m, 4.0, 0.03, 9);
-  const FaceAdjacency adj = build_face_adjacency(m);
-  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  for (std::size_t f = 0; f < m.face.size(); f += 997)
+    vcg::tri::Allocator<test_mesh::TMesh>::DeleteFace(m, m.face[f]);
+  const FaceAdjacency adj = build_face_adjacency(m, 1);
+  std::vector<Eigen::Vector3d> raw_one;
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m, 1, &raw_one);
   const SurfaceRoughness one = measure_surface_roughness(faces.centroid, faces.area, adj, 0, 1);
   const std::vector<Eigen::Vector3d> normals_one = smooth_face_normals(m, adj, 5, 180.0, 1);
   for (int threads : {2, 3, 8}) {
+    const FaceAdjacency adj_many = build_face_adjacency(m, threads);
+    EXPECT_TRUE(adj_many.offset == adj.offset && adj_many.neighbour == adj.neighbour) << threads << " threads";
+    std::vector<Eigen::Vector3d> raw_many;
+    const FaceCentroidsAndAreas faces_many = face_centroids_and_areas(m, threads, &raw_many);
+    EXPECT_TRUE(faces_many.centroid == faces.centroid && faces_many.area == faces.area && raw_many == raw_one)
+        << threads << " threads";
     const SurfaceRoughness many = measure_surface_roughness(faces.centroid, faces.area, adj, 0, threads);
     EXPECT_EQ(many.noise, one.noise) << threads << " threads";
     EXPECT_EQ(many.waviness, one.waviness) << threads << " threads";
@@ -114,6 +124,19 @@ TEST(EstimateSurfaceRoughness, SameOnEveryThreadCount)
     EXPECT_TRUE(smooth_face_normals(m, adj, 5, 180.0, threads) == normals_one) << threads << " threads";
   }
   EXPECT_GT(one.noise, 0.0);
+  // The normals beside the table: the face's unit normal from its corners, zero for a deleted face, whose
+  // neighbours do not list it.
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    if (m.face[f].IsD()) {
+      EXPECT_TRUE(raw_one[f].isZero(0.0) && faces.area[f] == 0.0) << f;
+      EXPECT_EQ(adj.offset[f], adj.offset[f + 1]) << f;
+      continue;
+    }
+    const vcg::Point3d n = vcg::TriangleNormal(m.face[f]).Normalize();
+    EXPECT_LT((raw_one[f] - Eigen::Vector3d(n[0], n[1], n[2])).norm(), 1e-12) << f;
+  }
+  for (int g : adj.neighbour)
+    EXPECT_FALSE(m.face[std::size_t(g)].IsD()) << g;
 }
 
 TEST(EstimateSurfaceRoughness, ExactPlaneIsSmooth)
