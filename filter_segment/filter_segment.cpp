@@ -211,10 +211,11 @@ Status SegmentFilters::apply(int id, FilterRun& run)
   return fail("Unknown filter.");
 }
 
-void SegmentFilters::storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face)
+void SegmentFilters::storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face,
+                                   const FaceAdjacency* adjacency)
 {
   mm.updateDataMask(MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR);
-  write_segment_ids(mm.cm, segment_of_face);
+  write_segment_ids(mm.cm, segment_of_face, adjacency);
   // Ids have changed meaning: primitives recorded for the old segments no longer apply.
   clear_segment_primitives(mm.cm);
 }
@@ -234,8 +235,10 @@ Status SegmentFilters::autoSegment(MeshModel& mm, const Arguments& parlst, Run& 
   timer.start();
   std::vector<int> segment_of_face;
   SegmentByNormalAngleReport report;
-  const int k = segment_by_normal_angle(mm.cm, params, segment_of_face, run.progress, &report);
-  storeSegments(mm, segment_of_face);
+  // Built once: the colouring of the segments needs it too.
+  const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
+  const int k = segment_by_normal_angle(mm.cm, adjacency, params, segment_of_face, run.progress, &report);
+  storeSegments(mm, segment_of_face, &adjacency);
   const QByteArray noise = report.edge_faces
       ? QString(" (for noise %1, edge faces handed out after the fill)").arg(report.noise, 0, 'g', 3).toUtf8()
       : QByteArray();
@@ -262,8 +265,10 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   std::vector<int> segment_of_face;
   SegmentByPrimitiveGrowingReport report;
   params.roughness = read_surface_roughness(mm.cm).value_or(0.0);
-  const int k = segment_by_primitive_growing(mm.cm, params, segment_of_face, &report, run.progress);
-  storeSegments(mm, segment_of_face);
+  // Built once: the colouring of the segments needs it too.
+  const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
+  const int k = segment_by_primitive_growing(mm.cm, adjacency, params, segment_of_face, &report, run.progress);
+  storeSegments(mm, segment_of_face, &adjacency);
   write_surface_roughness(mm.cm, report.roughness);  // the fits that follow reuse it
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
@@ -321,7 +326,7 @@ Status SegmentFilters::splitByPlane(MeshModel& mm, const Arguments& parlst, Run&
   }
   const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
   const int after = split_segments_by_plane(mm.cm, adjacency, segment_of_face, segments, point, normal);
-  storeSegments(mm, segment_of_face);
+  storeSegments(mm, segment_of_face, &adjacency);
   run.logf("Segment: Split by Plane: %d segment(s) cut into %d pieces; %d segments before, %d after.",
       int(segments.size()), int(segments.size()) + after - before, before, after);
   return Status::success();

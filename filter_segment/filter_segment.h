@@ -11,6 +11,10 @@
 
 #include <vector>
 
+namespace primitive_edit {
+struct FaceAdjacency;
+}
+
 class SegmentFilters : public primitive_edit::meshlab::FilterSuite
 {
 public:
@@ -32,7 +36,9 @@ private:
   Status splitByPlane(MeshModel& mm, const Arguments& args, Run& run);
   Status splitBySelection(MeshModel& mm, Run& run);
   Status selectSegment(MeshModel& mm, const Arguments& args, Run& run);
-  void storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face);
+  // adjacency: the mesh's, when the caller has built it (else the colouring builds it).
+  void storeSegments(MeshModel& mm, const std::vector<int>& segment_of_face,
+                     const primitive_edit::FaceAdjacency* adjacency = nullptr);
 };
 
 #endif
