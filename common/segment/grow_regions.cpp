@@ -2,27 +2,6 @@
 
 namespace primitive_edit {
 
-std::vector<int> seed_order(const GrowingFaces& g, const FaceAdjacency& adj)
-{
-  const std::size_t n = g.valid.size();
-  std::vector<double> variation = huge_page_vector(n, std::numeric_limits<double>::infinity());
-  std::vector<int> order;
-  reserve_on_huge_pages(order, n);
-  for (std::size_t f = 0; f < n; ++f) {
-    if (!g.valid[f])
-      continue;
-    double v = 0;
-    for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k) {
-      const std::size_t h = std::size_t(adj.neighbour[std::size_t(k)]);
-      v += 1.0 - (g.valid[h] ? g.normal[f].dot(g.normal[h]) : -1.0);
-    }
-    variation[f] = v / std::max(1, adj.offset[f + 1] - adj.offset[f]);
-    order.push_back(int(f));
-  }
-  sort_by_key(order, [&](int f) { return variation[std::size_t(f)]; });
-  return order;
-}
-
 namespace grow_detail {
 
 void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale, int id,
@@ -108,7 +87,7 @@ std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& 
 } // namespace grow_detail
 
 GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                            const Progress& progress)
+                            const Progress& progress, int threads)
 {
   using namespace grow_detail;
   const std::size_t face_count = g.valid.size();
@@ -118,16 +97,17 @@ GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, con
   std::vector<char> failed = huge_page_vector(face_count, char(0)); // faces no seed should be tried from
   FaceStamps stamps;
   assign_on_huge_pages(stamps.stamp, face_count, 0);
-  const std::vector<int> order = scale.tolerance > 0 ? seed_order(g, adj) : std::vector<int>();
   std::vector<int> patch, region, queue, open_faces, band;
   auto unassigned = [&](int f) { return g.valid[std::size_t(f)] && label[std::size_t(f)] < 0; };
-  std::size_t processed = 0;
-  for (int seed : order) {
-    ++processed;
-    if ((processed & 0x3FFF) == 0)
-      report_progress(progress, int(100.0 * double(processed) / double(order.size())), "Growing regions");
-    if (!unassigned(seed) || failed[std::size_t(seed)])
-      continue;
+  // A face once assigned or failed never seeds again, as SeedQueue requires.
+  auto may_seed = [&](int f) { return unassigned(f) && !failed[std::size_t(f)]; };
+  if (!(scale.tolerance > 0))
+    return out;
+  SeedQueue seeds(g, adj, threads);
+  int reported = 0;
+  for (int seed = seeds.next(may_seed); seed >= 0; seed = seeds.next(may_seed)) {
+    if (const int percent = int(100.0 * seeds.share_passed()); percent > reported)
+      report_progress(progress, reported = percent, "Growing regions");
     bfs_patch(adj, {seed}, std::size_t(scale.seed_patch_faces), unassigned, stamps, patch);
     std::optional<Primitive> prim;
     if (int(patch.size()) >= scale.seed_patch_faces / 2)

@@ -4,9 +4,11 @@
 // Input:  GrowingFaces (growing_faces.h), the FaceAdjacency and GrowingScale: the distance tolerance and
 //         normal angle of FaceAgreement, the faces of a seed patch, the fewest faces a region keeps and the
 //         smallest radius of curvature a region's primitive may have (smaller: an edge rounded by the
-//         scanner's blur, not a CAD surface).
+//         scanner's blur, not a CAD surface); the threads for the seed order (the result does not depend on
+//         them).
 // Output: GrowingRegions: label (region of each face, -1 for none), and per region its primitive and faces.
-// Method: seeds in order of flatness (the smoothed normal's variation over the 1-ring, flattest first).
+// Method: seeds in order of flatness (seed_queue.h: the smoothed normal's variation over the 1-ring, flattest
+//         first).
 //         From each unassigned seed: a breadth-first patch of seed_patch_faces faces, fitted
 //         (fit_region_primitive, 90% must agree); a patch that fits nothing marks its faces as failed seeds.
 //         The region grows breadth-first over unassigned faces that agree with the primitive, refitted each
@@ -14,16 +16,16 @@
 //         region and kBandRings rings around it (95% must agree) replaces it and growth resumes (a plane
 //         patch that is part of a large cylinder), twice at most. Regions smaller than min_region_faces or
 //         curved more tightly than min_curvature_radius are undone, their faces marked failed.
-// Cost:   O(F) for the seed order (a radix sort); growth visits each face O(1) times per refit of its region,
-//         and refits happen at geometric size steps on at most kFitSampleCount faces.
+// Cost:   O(F) for the seed order (sorted bucket by bucket); growth visits each face O(1) times per refit of its
+//         region, and refits happen at geometric size steps on at most kFitSampleCount faces.
 #ifndef PRIMITIVE_EDIT_GROW_REGIONS_H
 #define PRIMITIVE_EDIT_GROW_REGIONS_H
 
 #include "common/base/huge_page_vector.h"
 #include "common/base/progress.h"
-#include "common/base/sort_by_key.h"
 #include "common/segment/fit_region_primitive.h"
 #include "common/segment/growing_faces.h"
+#include "common/segment/seed_queue.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -83,8 +85,6 @@ void bfs_patch(const FaceAdjacency& adj, const std::vector<int>& starts, std::si
   }
 }
 
-std::vector<int> seed_order(const GrowingFaces& g, const FaceAdjacency& adj);
-
 namespace grow_detail {
 
 // Grows region `id` breadth-first (after a refit, faces rejected before may agree) over unassigned faces that
@@ -109,7 +109,7 @@ std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& 
 } // namespace grow_detail
 
 GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                            const Progress& progress = {});
+                            const Progress& progress = {}, int threads = 0);
 
 } // namespace primitive_edit
 

@@ -56,11 +56,11 @@
 //         each phase's wall-clock time.
 //         Faces without a defined normal (zero area, NaN/Inf coordinates) never seed or grow a region; the
 //         final flood gives them the label of a neighbour.
-// Complexity: O(F log F) time (the final priority flood; the seed order is a radix sort); growth visits each
-//         face O(1) times per refit of its region, and refits happen at geometric size steps on subsamples of
-//         at most kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount). Merging refits
-//         each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each region, per
-//         round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
+// Complexity: O(F log F) time (the final priority flood; the seed order is sorted bucket by bucket); growth
+//         visits each face O(1) times per refit of its region, and refits happen at geometric size steps on
+//         subsamples of at most kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount).
+//         Merging refits each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each
+//         region, per round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
@@ -102,8 +102,8 @@ struct SegmentByPrimitiveGrowingParams
   int smoothing_iterations = 10;
   double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h);
                                  // <= 0 or not finite: estimated
-  int threads = 0;               // for normal smoothing, the roughness and the merge tests (<= 0: all); the result
-                                 // does not depend on it
+  int threads = 0;               // for the face tables, the seed order, the roughness and the merge tests (<= 0:
+                                 // all); the result does not depend on it
 };
 
 // The ranges a user's parameters must lie in; the segmentation itself keeps within them whatever it is given
@@ -196,7 +196,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("roughness");
 
   report_progress(progress, 10, "Growing regions");
-  GrowingRegions regions = grow_regions(g, adj, scale, progress_range(progress, 10, 70));
+  GrowingRegions regions = grow_regions(g, adj, scale, progress_range(progress, 10, 70), params.threads);
   const int grown = int(regions.primitive.size());
   clock.lap("grow");
 
