@@ -51,36 +51,29 @@ FaceAdjacency face_adjacency_from_corners(const std::vector<int>& face_vertex, s
 
   FaceAdjacency adj;
   assign_on_huge_pages(adj.offset, face_count + 1, 0);
-  // Each range of faces lists its neighbours apart; the lists are then joined in face order, so the table does not
-  // depend on the ranges.
+  reserve_on_huge_pages(adj.neighbour, 3 * face_count);
+  // Each range of faces lists its neighbours apart, the first straight into the table; the others' lists are then
+  // appended in face order, so the table does not depend on the ranges. A closed manifold mesh fills the table's
+  // 3 F reserved entries exactly, so appending does not move it.
   const std::size_t ranges =
       std::max<std::size_t>(1, std::min(std::size_t(resolve_thread_count(threads)), face_count / kFacesPerThread));
   auto range_begin = [&](std::size_t r) { return r * face_count / ranges; };
-  if (ranges == 1) {
-    reserve_on_huge_pages(adj.neighbour, 3 * face_count);
-    list_neighbours(face_vertex, incident, 0, face_count, adj.neighbour, &adj.offset[1]);
-    return adj;
-  }
   std::vector<std::vector<int>> lists(ranges);
   parallel_for(ranges, int(ranges), 1, [&](std::size_t first, std::size_t last) {
     for (std::size_t r = first; r < last; ++r) {
-      reserve_on_huge_pages(lists[r], 3 * (range_begin(r + 1) - range_begin(r)));
-      list_neighbours(face_vertex, incident, range_begin(r), range_begin(r + 1), lists[r],
-                      &adj.offset[range_begin(r) + 1]);
+      std::vector<int>& list = r == 0 ? adj.neighbour : lists[r];
+      if (r > 0)
+        reserve_on_huge_pages(list, 3 * (range_begin(r + 1) - range_begin(r)));
+      list_neighbours(face_vertex, incident, range_begin(r), range_begin(r + 1), list, &adj.offset[range_begin(r) + 1]);
     }
   });
-  std::vector<std::size_t> base(ranges + 1, 0);
-  for (std::size_t r = 0; r < ranges; ++r)
-    base[r + 1] = base[r] + lists[r].size();
-  reserve_on_huge_pages(adj.neighbour, base[ranges]);
-  adj.neighbour.resize(base[ranges]);
-  parallel_for(ranges, int(ranges), 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t r = first; r < last; ++r) {
-      std::copy(lists[r].begin(), lists[r].end(), adj.neighbour.begin() + std::ptrdiff_t(base[r]));
-      for (std::size_t f = range_begin(r); f < range_begin(r + 1); ++f)
-        adj.offset[f + 1] += int(base[r]);
-    }
-  });
+  for (std::size_t r = 1; r < ranges; ++r) {
+    const int base = int(adj.neighbour.size());
+    adj.neighbour.insert(adj.neighbour.end(), lists[r].begin(), lists[r].end());
+    std::vector<int>().swap(lists[r]);
+    for (std::size_t f = range_begin(r); f < range_begin(r + 1); ++f)
+      adj.offset[f + 1] += base;
+  }
   return adj;
 }
 
