@@ -31,8 +31,6 @@ struct FaceCentroidsAndAreas
   std::vector<double> area;
 };
 
-// The centroid and area of one face, as face_centroids_and_areas gives them; false (and nothing written) for a
-// face that is deleted, lacks a vertex, or whose centroid or area is not finite.
 // The centroid, area and (when asked for) unit normal of one face, as face_centroids_and_areas gives them; false
 // (and nothing written) for a face that is deleted, lacks a vertex, or whose centroid or area is not finite.
 template <class FaceType>

@@ -1,11 +1,10 @@
 #include "common/segment/seed_queue.h"
 
 #include "common/base/huge_page_vector.h"
-#include "common/base/parallel_for.h"
 #include "common/base/ordered_bits.h"
+#include "common/base/parallel_for.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <limits>
 
 namespace primitive_edit {
