@@ -78,11 +78,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   automatic.fit = options;
   automatic.tolerance = in.special(0.1);
   automatic.roughness = in.special(0.05);
-  if (in.u8() % 4 == 0) {
+  const unsigned char pick = in.u8();
+  if (pick % 4 == 0) {
     const AutoFitResult r = fit_primitive_auto(points, normals, weights, automatic);
     for (const FitResult& c : r.candidates)
       check_fit(c);
     FUZZ_CHECK(!r.status.ok() || primitive_is_valid(r.best.primitive));
+    if (pick % 8 == 0) { // the candidate types side by side: the same fits
+      AutoFitOptions two = automatic;
+      two.threads = 2;
+      const AutoFitResult r2 = fit_primitive_auto(points, normals, weights, two);
+      FUZZ_CHECK(r2.status.ok() == r.status.ok() && r2.candidates.size() == r.candidates.size());
+      for (std::size_t t = 0; t < r.candidates.size(); ++t)
+        check_same(r.candidates[t], r2.candidates[t]);
+      check_same(r.best, r2.best);
+    }
   }
 
   // The filters' fit of a segment, given a type (the automatic one is the call above).

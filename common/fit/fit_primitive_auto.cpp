@@ -1,5 +1,9 @@
 #include "common/fit/fit_primitive_auto.h"
 
+#include "common/base/parallel_for.h"
+
+#include <atomic>
+
 namespace primitive_edit {
 
 namespace fit_auto_detail {
@@ -14,6 +18,24 @@ double axial_extent(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weigh
       hi = std::max(hi, h);
     }
   return hi > lo ? hi - lo : 0.0;
+}
+
+std::vector<FitResult> screen_candidates(const FitSample& s, const FitOptions& options, int threads)
+{
+  std::vector<FitResult> candidates(kPrimitiveTypeCount);
+  // Costliest first, so that two threads finish together (300 noisy points of a plane: cone 1.9 ms, torus 1.5,
+  // cylinder 0.8, sphere and plane 0.1-0.15).
+  static constexpr PrimitiveType order[kPrimitiveTypeCount] = {PrimitiveType::Cone, PrimitiveType::Torus,
+                                                               PrimitiveType::Cylinder, PrimitiveType::Sphere,
+                                                               PrimitiveType::Plane};
+  std::atomic<int> next{0};
+  parallel_for(std::size_t(kPrimitiveTypeCount), threads, 1, [&](std::size_t, std::size_t) {
+    for (int i = next++; i < kPrimitiveTypeCount; i = next++) {
+      const PrimitiveType type = order[i];
+      candidates[std::size_t(type)] = fit_primitive(type, s.points, s.normals, s.weights, options);
+    }
+  });
+  return candidates;
 }
 
 } // namespace fit_auto_detail
@@ -47,10 +69,10 @@ AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Eigen::Ma
   double chosen_score = std::numeric_limits<double>::infinity();
   int fallback = -1;
   double fallback_score = std::numeric_limits<double>::infinity();
+  out.candidates = fit_auto_detail::screen_candidates(s, screen_options, options.threads);
   for (int t = 0; t < kPrimitiveTypeCount; ++t) {
     const PrimitiveType type = static_cast<PrimitiveType>(t);
-    out.candidates.push_back(fit_primitive(type, s.points, s.normals, s.weights, screen_options));
-    const FitResult& c = out.candidates.back();
+    const FitResult& c = out.candidates[std::size_t(t)];
     if (!c.status.ok())
       continue;
     const double score = std::max(c.rms, 1e-6 * diagonal) * (1.0 + 0.5 * primitive_degrees_of_freedom(type));

@@ -22,8 +22,11 @@
 //         strided subsample of that size, with at most 20 iterations per round (their rms /
 //         max_residual / point_count refer to it): enough to rank the types, and 5-10 times cheaper
 //         than screening on thousands of points. Only the chosen type is then refined on all points
-//         (its candidate entry is replaced by that full fit).
-// Cost:   O(5 * 300 * 20 * starts) for the screening plus O(N * iterations) for the final refinement.
+//         (its candidate entry is replaced by that full fit). With options.threads > 1 the candidates are
+//         fitted side by side, costliest first (a cone or torus takes 10-25 times a plane), each into its own
+//         entry, so the choice is the one a single thread makes.
+// Cost:   O(5 * 300 * 20 * starts) for the screening (divided by up to 2 threads: the cone alone is half of it)
+//         plus O(N * iterations) for the final refinement.
 #ifndef PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 #define PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 
@@ -46,6 +49,7 @@ struct AutoFitOptions
   double roughness = 0;  // the data's noise RMS (estimate_surface_roughness.h), or 0 if unknown (so is a value not
                          // finite): the automatic tolerance is max(1% of the bounding-box diagonal, 3 x roughness)
   FitOptions fit;
+  int threads = 1;       // the candidate types are fitted on this many threads (<= 0: all); the result is the same
 };
 
 struct AutoFitResult
@@ -62,6 +66,9 @@ namespace fit_auto_detail {
 
 // Extent of the points (w > 0) along the axis: the length over which a cone's taper is seen.
 double axial_extent(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const Eigen::Vector3d& axis);
+
+// Every type's fit of the screening sample, in PrimitiveType order, on up to `threads` threads.
+std::vector<FitResult> screen_candidates(const FitSample& s, const FitOptions& options, int threads);
 
 } // namespace fit_auto_detail
 

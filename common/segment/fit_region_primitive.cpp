@@ -3,7 +3,8 @@
 namespace primitive_edit {
 
 std::optional<Primitive> fit_region_primitive(const GrowingFaces& g, const std::vector<int>& faces,
-                                              const Primitive* start, double tol, double angle, double share)
+                                              const Primitive* start, double tol, double angle, double share,
+                                              int threads)
 {
   Eigen::MatrixX3d points, normals;
   Eigen::VectorXd weights;
@@ -27,6 +28,7 @@ std::optional<Primitive> fit_region_primitive(const GrowingFaces& g, const std::
     return plane.primitive;
   AutoFitOptions options;
   options.tolerance = 0.5 * tol;
+  options.threads = threads;
   const AutoFitResult best = fit_primitive_auto(points, normals, weights, options);
   if (best.status.ok() && accept(best.best))
     return best.best.primitive;

@@ -1,7 +1,8 @@
 // fit_region_primitive.h: a primitive for a set of faces, accepted only when the faces agree with it.
 //
 // Input:  GrowingFaces (growing_faces.h), the faces, an optional start primitive, the distance tolerance,
-//         the normal angle (radians) and the share of the faces' area that must agree (FaceAgreement).
+//         the normal angle (radians), the share of the faces' area that must agree (FaceAgreement) and the
+//         threads for fit_primitive_auto's candidate types (the result does not depend on them).
 // Output: the primitive, or std::nullopt when none is accepted.
 // Method: on at most kFitSampleCount evenly strided faces (centroid, smoothed normal, area): with a start,
 //         the start refined (refine_primitive, 10 iterations); without, a plane first, then
@@ -23,7 +24,8 @@ namespace primitive_edit {
 constexpr int kFitSampleCount = 600; // faces a region's fit uses at most
 
 std::optional<Primitive> fit_region_primitive(const GrowingFaces& g, const std::vector<int>& faces,
-                                              const Primitive* start, double tol, double angle, double share);
+                                              const Primitive* start, double tol, double angle, double share,
+                                              int threads = 1);
 
 } // namespace primitive_edit
 

@@ -53,7 +53,7 @@ void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const 
 std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
                                     const Primitive& prim, const std::vector<int>& region,
                                     const std::vector<int>& open_faces, const std::vector<int>& label,
-                                    FaceStamps& stamps, std::vector<int>& band)
+                                    FaceStamps& stamps, std::vector<int>& band, int threads)
 {
   const int mark = ++stamps.mark;
   band = region;
@@ -78,7 +78,8 @@ std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& 
   }
   if (band.size() == inner)
     return std::nullopt;
-  std::optional<Primitive> wider = fit_region_primitive(g, band, nullptr, scale.tolerance, scale.angle, 0.95);
+  std::optional<Primitive> wider =
+      fit_region_primitive(g, band, nullptr, scale.tolerance, scale.angle, 0.95, threads);
   if (!wider || wider->type == prim.type)
     return std::nullopt;
   return wider;
@@ -125,7 +126,8 @@ GrowingRegions grow_regions(const GrowingFaces& g, const FaceAdjacency& adj, con
       grow_while_agreeing(g, adj, scale, id, *prim, fitted_size, region, label, stamps, queue, open_faces);
       if (type_changes >= 2 || int(region.size()) < scale.min_region_faces)
         break;
-      const std::optional<Primitive> wider = wider_type(g, adj, scale, *prim, region, open_faces, label, stamps, band);
+      const std::optional<Primitive> wider =
+          wider_type(g, adj, scale, *prim, region, open_faces, label, stamps, band, threads);
       if (!wider)
         break;
       prim = wider;

@@ -4,8 +4,8 @@
 // Input:  GrowingFaces (growing_faces.h), the FaceAdjacency and GrowingScale: the distance tolerance and
 //         normal angle of FaceAgreement, the faces of a seed patch, the fewest faces a region keeps and the
 //         smallest radius of curvature a region's primitive may have (smaller: an edge rounded by the
-//         scanner's blur, not a CAD surface); the threads for the seed order (the result does not depend on
-//         them).
+//         scanner's blur, not a CAD surface); the threads for the seed order and a type change's fits (the
+//         result does not depend on them).
 // Output: GrowingRegions: label (region of each face, -1 for none), and per region its primitive and faces.
 // Method: seeds in order of flatness (seed_queue.h: the smoothed normal's variation over the 1-ring, flattest
 //         first).
@@ -100,11 +100,12 @@ void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const 
 
 // A primitive of another type than `prim` that the stopped region and kBandRings rings of unassigned faces
 // around it agree with (95%), or nullopt. The band is the region followed by its rings, the first ring walked
-// from the region's open faces (grow_while_agreeing) rather than from all of its faces.
+// from the region's open faces (grow_while_agreeing) rather than from all of its faces. The candidate types are
+// fitted on `threads` (the result does not depend on them).
 std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
                                     const Primitive& prim, const std::vector<int>& region,
                                     const std::vector<int>& open_faces, const std::vector<int>& label,
-                                    FaceStamps& stamps, std::vector<int>& band);
+                                    FaceStamps& stamps, std::vector<int>& band, int threads);
 
 } // namespace grow_detail
 

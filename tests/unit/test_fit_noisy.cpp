@@ -95,6 +95,43 @@ TEST(FitNoisy, EachTypeRadiusWithinOnePercentAndAutoChoosesIt)
   }
 }
 
+void expect_same_fit(const FitResult& a, const FitResult& b)
+{
+  EXPECT_EQ(a.status.ok(), b.status.ok());
+  EXPECT_EQ(a.status.error, b.status.error);
+  EXPECT_EQ(a.primitive.type, b.primitive.type);
+  EXPECT_EQ(a.primitive.origin, b.primitive.origin);
+  EXPECT_EQ(a.primitive.axis, b.primitive.axis);
+  EXPECT_EQ(a.primitive.radius, b.primitive.radius);
+  EXPECT_EQ(a.primitive.minor_radius, b.primitive.minor_radius);
+  EXPECT_EQ(a.primitive.half_angle, b.primitive.half_angle);
+  EXPECT_EQ(a.rms, b.rms);
+  EXPECT_EQ(a.point_count, b.point_count);
+}
+
+// The candidate types fitted side by side give, bit for bit, what one thread gives.
+TEST(FitNoisy, SameCandidatesAndChoiceOnEveryThreadCount)
+{
+  unsigned seed = 60;
+  for (const Case& c : cases()) {
+    Sample s = sample_primitive(c.truth, c.patch, 1000, seed++);
+    add_noise(&s, 0.01 * c.size, 5.0, seed++);
+    const AutoFitResult one = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd());
+    ASSERT_TRUE(one.status.ok()) << c.name << ": " << one.status.error;
+    for (int threads : {2, 3, 8}) {
+      SCOPED_TRACE(std::string(c.name) + " on " + std::to_string(threads) + " threads");
+      AutoFitOptions options;
+      options.threads = threads;
+      const AutoFitResult many = fit_primitive_auto(s.points, s.normals, Eigen::VectorXd(), options);
+      EXPECT_EQ(many.status.ok(), one.status.ok());
+      ASSERT_EQ(many.candidates.size(), one.candidates.size());
+      for (std::size_t t = 0; t < one.candidates.size(); ++t)
+        expect_same_fit(many.candidates[t], one.candidates[t]);
+      expect_same_fit(many.best, one.best);
+    }
+  }
+}
+
 TEST(FitNoisy, TenPercentFarOutliersRejectedWhenRobust)
 {
   unsigned seed = 40;
