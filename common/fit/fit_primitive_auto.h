@@ -23,10 +23,10 @@
 //         max_residual / point_count refer to it): enough to rank the types, and 5-10 times cheaper
 //         than screening on thousands of points. Only the chosen type is then refined on all points
 //         (its candidate entry is replaced by that full fit). With options.threads > 1 the candidates are
-//         fitted side by side, costliest first (a cone or torus takes 10-25 times a plane), each into its own
-//         entry, so the choice is the one a single thread makes.
-// Cost:   O(5 * 300 * 20 * starts) for the screening (divided by up to 2 threads: the cone alone is half of it)
-//         plus O(N * iterations) for the final refinement.
+//         fitted side by side, costliest first (on a noisy plane patch a cone or torus takes 20-25 times a
+//         plane), each into its own entry, so the choice is the one a single thread makes.
+// Cost:   O(5 * 300 * 20 * starts) for the screening (at best halved on 2 threads or more: the cone and the torus
+//         are each about 40% of it) plus O(N * iterations) for the final refinement.
 #ifndef PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 #define PRIMITIVE_EDIT_FIT_PRIMITIVE_AUTO_H
 
