@@ -48,7 +48,7 @@ void make_plate(M& m, int n, double size, double z)
 
 // A latitude-longitude sphere (poles as rings of coincident vertices, so the pole triangles are degenerate).
 template <class M>
-void make_sphere(M& m, double radius, int stacks, int slices)
+void make_uv_sphere(M& m, double radius, int stacks, int slices)
 {
   m.Clear();
   for (int i = 0; i <= stacks; ++i) {
@@ -125,9 +125,9 @@ TYPED_TEST(MeasureAccuracyTest, PlateAgainstOffsetPlaneIsAtTheOffsetEverywhere)
 TYPED_TEST(MeasureAccuracyTest, SphereAgainstLargerSphereMatchesRadialGap)
 {
   TypeParam measured, reference;
-  make_sphere(measured, 1.0, 60, 120);
+  make_uv_sphere(measured, 1.0, 60, 120);
   const int stacks = 100, slices = 200;
-  make_sphere(reference, 1.1, stacks, slices);
+  make_uv_sphere(reference, 1.1, stacks, slices);
   Eigen::MatrixX3d samples;
   ASSERT_TRUE(primitive_edit::sample_surface_uniform(measured, 5000, 7, &samples).ok());
   ASSERT_EQ(samples.rows(), 5000);
@@ -152,7 +152,7 @@ TYPED_TEST(MeasureAccuracyTest, SphereAgainstLargerSphereMatchesRadialGap)
 TYPED_TEST(MeasureAccuracyTest, GridQueriesMatchBruteForceNearAndFar)
 {
   TypeParam reference;
-  make_sphere(reference, 1.0, 24, 48);
+  make_uv_sphere(reference, 1.0, 24, 48);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 0.01);
   for (auto& v : reference.vert)  // bumpy, so that closest points fall on faces, edges and vertices
@@ -239,7 +239,7 @@ TYPED_TEST(MeasureAccuracyTest, SamplesPerFaceAreProportionalToArea)
 TYPED_TEST(MeasureAccuracyTest, SeededSamplingIsReproducible)
 {
   TypeParam m;
-  make_sphere(m, 2.0, 10, 20);
+  make_uv_sphere(m, 2.0, 10, 20);
   Eigen::MatrixX3d a, b, c;
   ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 1000, 42, &a).ok());
   ASSERT_TRUE(primitive_edit::sample_surface_uniform(m, 1000, 42, &b).ok());
