@@ -252,6 +252,63 @@ int add_parallel_relations(const std::vector<int>& group, const DirectionTests& 
   return rep;
 }
 
+std::vector<Relation> frame_relations(const std::vector<Eigen::Vector3d>& dirs, const std::vector<int>& frame_target,
+                                      const std::vector<int>& representative, const DirectionTests& tests)
+{
+  const std::size_t m = frame_target.size();
+  // Candidates: every pair whose frame directions are perpendicular, 45 or 60 degrees apart, in that order.
+  struct Candidate
+  {
+    std::size_t i, j;
+    double angle_deg;
+  };
+  std::vector<Candidate> candidates;
+  for (const double angle_deg : {90.0, 45.0, 60.0})
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = i + 1; j < m; ++j) {
+        const double c = std::abs(dirs[std::size_t(frame_target[i])].dot(dirs[std::size_t(frame_target[j])]));
+        if (std::abs(c - std::cos(radians_from_degrees(angle_deg))) < 1e-9)
+          candidates.push_back({i, j, angle_deg});
+      }
+  // Each direction's two turns at its frame direction; a relation's row is its first-order change.
+  std::vector<Eigen::Vector3d> t1(m), t2(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Eigen::Vector3d& u = dirs[std::size_t(frame_target[i])];
+    t1[i] = u.unitOrthogonal();
+    t2[i] = u.cross(t1[i]);
+  }
+  std::vector<Eigen::VectorXd> basis;  // orthonormal rows taken so far
+  std::vector<Relation> out;
+  for (const Candidate& k : candidates) {
+    const Eigen::Vector3d& ui = dirs[std::size_t(frame_target[k.i])];
+    const Eigen::Vector3d& uj = dirs[std::size_t(frame_target[k.j])];
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(Eigen::Index(2 * m));
+    row[Eigen::Index(2 * k.i)] = t1[k.i].dot(uj);
+    row[Eigen::Index(2 * k.i + 1)] = t2[k.i].dot(uj);
+    row[Eigen::Index(2 * k.j)] = ui.dot(t1[k.j]);
+    row[Eigen::Index(2 * k.j + 1)] = ui.dot(t2[k.j]);
+    const double norm = row.norm();
+    for (const Eigen::VectorXd& q : basis)
+      row -= q.dot(row) * q;
+    if (!(row.norm() > 0.3 * norm))
+      continue;  // implied by the relations taken, to first order: it would only make their step ill-posed
+    basis.push_back(row / row.norm());
+    Relation r;
+    r.a = representative[k.i];
+    r.b = representative[k.j];
+    if (k.angle_deg == 90.0) {
+      r.kind = RelationKind::Perpendicular;
+    } else {
+      r.kind = RelationKind::Angle;
+      r.angle_deg = k.angle_deg;
+      // Orient b so that its direction makes the acute angle with a's.
+      r.sign = tests.axis(r.a).dot(tests.axis(r.b)) < 0 ? -1.0 : 1.0;
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
 } // namespace direction_detail
 
 std::vector<Relation> detect_direction_relations(const std::vector<const Primitive*>& primitives,
@@ -301,24 +358,8 @@ std::vector<Relation> detect_direction_relations(const std::vector<const Primiti
     frame_target.push_back(t);
     representative.push_back(add_parallel_relations(group, tests, out));
   }
-  for (std::size_t i = 0; i < frame_target.size(); ++i)
-    for (std::size_t j = i + 1; j < frame_target.size(); ++j) {
-      const double c = dirs[std::size_t(frame_target[i])].dot(dirs[std::size_t(frame_target[j])]);
-      Relation r;
-      r.a = representative[i];
-      r.b = representative[j];
-      if (std::abs(c) < 1e-9) {
-        r.kind = RelationKind::Perpendicular;
-      } else if (std::abs(std::abs(c) - std::sqrt(0.5)) < 1e-9) {
-        r.kind = RelationKind::Angle;
-        r.angle_deg = 45;
-        // Orient b so that its direction makes 45 (not 135) degrees with a's.
-        r.sign = tests.axis(r.a).dot(tests.axis(r.b)) < 0 ? -1.0 : 1.0;
-      } else {
-        continue;  // two diagonals 60 degrees apart: each is held by its angles to the axes
-      }
-      out.push_back(r);
-    }
+  const std::vector<Relation> held = frame_relations(dirs, frame_target, representative, tests);
+  out.insert(out.end(), held.begin(), held.end());
   return out;
 }
 

@@ -5,7 +5,8 @@
 //         the largest angle a direction may be off a relation (radians), and the largest share
 //         `max_cost_increase` by which a relation may raise a segment's fit cost (to first order).
 // Output: Parallel relations (from the strongest member of each class of parallel directions to the others)
-//         and, between the frame's classes, Perpendicular and 45-degree Angle relations. Every relation was
+//         and, between the frame's classes, Perpendicular and Angle (45 or 60 degrees) relations, an independent
+//         set of them (frame_relations). Every relation was
 //         tested on every segment it moves: turning a segment's direction onto the class's direction must cost
 //         less than max_cost_increase of its fit cost (plus round-off), onto the frame's less than twice that
 //         (DirectionTests), measured with the segment's direction information, so that a strip too narrow to
@@ -29,6 +30,7 @@
 #ifndef PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
 #define PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
 
+#include "common/base/constants.h"
 #include "common/relate/fit_information.h"
 #include "common/relate/relation.h"
 
@@ -120,6 +122,15 @@ int strongest_member(const std::vector<int>& segments, const std::vector<FitInfo
 // Parallel relations from the strongest member of a group to each other member; returns that member.
 int add_parallel_relations(const std::vector<int>& group, const DirectionTests& tests,
                            std::vector<Relation>& out);
+
+// Perpendicular and Angle (45 or 60 degrees) relations between the representatives of the frame directions
+// `frame_target` (indices into `dirs`, the frame's directions), independent to first order at the frame: 2 m - 3
+// of them for m directions that span it, taken greedily, perpendicular pairs first. Every pair would
+// over-determine the directions, and a diagonal held at 45 degrees to both axes of its plane is held by two
+// constraints tangent to each other there, so that the joint refit's step diverges (1M-face bracket scan: every
+// relation dropped).
+std::vector<Relation> frame_relations(const std::vector<Eigen::Vector3d>& dirs, const std::vector<int>& frame_target,
+                                      const std::vector<int>& representative, const DirectionTests& tests);
 
 } // namespace direction_detail
 

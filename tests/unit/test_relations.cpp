@@ -324,6 +324,46 @@ TEST(Relations, ASlenderConeIsCoaxialWithItsBore)
   EXPECT_LT(axis_offset(refit.primitives[0], refit.primitives[1]), 1e-6);
 }
 
+// Two 45-degree chamfers along the edges of a top face, and one wall, but no face across them (normal x):
+// each chamfer is at 45 degrees to both the top and the wall. Held by both angles it is held by two
+// constraints tangent to each other at the frame, and the joint refit's step diverged (the 1M-face bracket
+// scan lost every relation so); the frame's relations are an independent set instead.
+TEST(Relations, ChamfersAtFortyFiveDegreesWithoutAFaceAcrossThem)
+{
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const double sigma = 0.05;
+  enum { Top, Wall, FrontChamfer, BackChamfer, Count };
+  std::vector<Patch> patches(Count);
+  patches[Top] = plane_patch(Eigen::Vector3d(0, 2, 10), 60 * X, 26 * Y, 4000, sigma, 41);
+  patches[Wall] = plane_patch(Eigen::Vector3d(0, 0, 0), 60 * X, 8 * Z, 2000, sigma, 42);
+  // Narrow, and turned about their edges by 4 and -3 degrees, as a rough scan's narrow faces come out.
+  auto turned = [&](double degrees, const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(Eigen::AngleAxisd(radians_from_degrees(degrees), X) * v);
+  };
+  patches[FrontChamfer] = plane_patch(Eigen::Vector3d(0, 0, 8), 60 * X, turned(4, 0.7 * (Y + Z)), 800, sigma, 43);
+  patches[BackChamfer] = plane_patch(Eigen::Vector3d(0, 28, 10), 60 * X, turned(-3, 0.7 * (Y - Z)), 800, sigma, 44);
+  std::vector<std::optional<Primitive>> fitted;
+  std::vector<SegmentSamples> samples;
+  for (const Patch& p : patches) {
+    const FitResult f = fit_primitive(PrimitiveType::Plane, p.samples.points, p.samples.normals, p.samples.weights);
+    ASSERT_TRUE(f.status.ok()) << f.status.error;
+    fitted.push_back(f.primitive);
+    samples.push_back(p.samples);
+  }
+  const RelatedPrimitives r = relate_primitives(fitted, samples, {}, sigma, RelationOptions());
+  ASSERT_TRUE(r.status.ok()) << r.status.error;
+  SCOPED_TRACE(describe(r.relations));
+  EXPECT_EQ(r.dropped, 0);
+  ASSERT_EQ(r.relations.size(), 3u);  // 2 m - 3 for 4 directions that leave the chamfers' tilt along x free
+  const std::vector<std::optional<Primitive>>& p = r.primitives;
+  EXPECT_NEAR(angle_deg(p[Top]->axis, p[Wall]->axis), 90, 1e-6);
+  EXPECT_NEAR(angle_deg(p[Top]->axis, p[FrontChamfer]->axis), 45, 1e-6);
+  EXPECT_NEAR(angle_deg(p[FrontChamfer]->axis, p[BackChamfer]->axis), 90, 1e-6);
+  // The chamfers turn onto the frame; the large faces, which hold it, stay.
+  for (int s : {Top, Wall})
+    EXPECT_LT(angle_deg(p[std::size_t(s)]->axis, patches[std::size_t(s)].truth.axis), 0.1) << "segment " << s;
+}
+
 // Found by fuzz/fuzz_relate.cpp: with every segment of a relation held fixed (snapped in the edit tool) the
 // refit had nothing to move and reported success with the relation broken.
 TEST(Relations, ARelationBetweenFixedSegmentsIsCheckedNotAssumed)
