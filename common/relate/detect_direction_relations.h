@@ -5,8 +5,8 @@
 //         the largest angle a direction may be off a relation (radians), and the largest share
 //         `max_cost_increase` by which a relation may raise a segment's fit cost (to first order).
 // Output: Parallel relations (from the strongest member of each class of parallel directions to the others)
-//         and, between the frame's classes, Perpendicular and Angle (45 or 60 degrees) relations, an independent
-//         set of them (frame_relations). Every relation was
+//         and, between the frame's classes, an independent set of Perpendicular and Angle (45 or 60 degrees)
+//         relations (frame_relations). Every relation was
 //         tested on every segment it moves: turning a segment's direction onto the class's direction must cost
 //         less than max_cost_increase of its fit cost (plus round-off), onto the frame's less than twice that
 //         (DirectionTests), measured with the segment's direction information, so that a strip too narrow to
@@ -124,11 +124,12 @@ int add_parallel_relations(const std::vector<int>& group, const DirectionTests& 
                            std::vector<Relation>& out);
 
 // Perpendicular and Angle (45 or 60 degrees) relations between the representatives of the frame directions
-// `frame_target` (indices into `dirs`, the frame's directions), independent to first order at the frame: 2 m - 3
-// of them for m directions that span it, taken greedily, perpendicular pairs first. Every pair would
-// over-determine the directions, and a diagonal held at 45 degrees to both axes of its plane is held by two
-// constraints tangent to each other there, so that the joint refit's step diverges (1M-face bracket scan: every
-// relation dropped).
+// `frame_target` (indices into `dirs`, the frame's directions), taken greedily, perpendicular pairs first, each
+// only when it is independent at the frame of those taken (its first-order row keeps 30% of its length once theirs
+// are projected out): at most 2 m - 3 for m directions, fewer where no pair holds a turn (a diagonal whose plane's
+// third axis has no segment may tilt out of that plane). Every pair would over-determine the directions, and a
+// diagonal held at 45 degrees to both axes of its plane is held by two constraints tangent to each other there, so
+// that the joint refit's step diverges (1M-face bracket scan: every relation dropped).
 std::vector<Relation> frame_relations(const std::vector<Eigen::Vector3d>& dirs, const std::vector<int>& frame_target,
                                       const std::vector<int>& representative, const DirectionTests& tests);
 
