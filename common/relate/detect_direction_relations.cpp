@@ -1,5 +1,7 @@
 #include "common/relate/detect_direction_relations.h"
 
+#include "common/base/constants.h"
+
 namespace primitive_edit {
 
 namespace direction_detail {

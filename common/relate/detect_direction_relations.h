@@ -30,7 +30,6 @@
 #ifndef PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
 #define PRIMITIVE_EDIT_DETECT_DIRECTION_RELATIONS_H
 
-#include "common/base/constants.h"
 #include "common/relate/fit_information.h"
 #include "common/relate/relation.h"
 
