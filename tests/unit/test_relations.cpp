@@ -333,7 +333,9 @@ TEST(Relations, ChamfersAtFortyFiveDegreesWithoutAFaceAcrossThem)
   const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
   const double sigma = 0.05;
   enum { Top, Wall, FrontChamfer, BackChamfer, Count };
-  std::vector<Patch> patches(Count);
+  Scene scene;
+  std::vector<Patch>& patches = scene.patches;
+  patches.resize(Count);
   patches[Top] = plane_patch(Eigen::Vector3d(0, 2, 10), 60 * X, 26 * Y, 4000, sigma, 41);
   patches[Wall] = plane_patch(Eigen::Vector3d(0, 0, 0), 60 * X, 8 * Z, 2000, sigma, 42);
   // Narrow, and turned about their edges by 4 and -3 degrees, as a rough scan's narrow faces come out.
@@ -342,15 +344,8 @@ TEST(Relations, ChamfersAtFortyFiveDegreesWithoutAFaceAcrossThem)
   };
   patches[FrontChamfer] = plane_patch(Eigen::Vector3d(0, 0, 8), 60 * X, turned(4, 0.7 * (Y + Z)), 800, sigma, 43);
   patches[BackChamfer] = plane_patch(Eigen::Vector3d(0, 28, 10), 60 * X, turned(-3, 0.7 * (Y - Z)), 800, sigma, 44);
-  std::vector<std::optional<Primitive>> fitted;
-  std::vector<SegmentSamples> samples;
-  for (const Patch& p : patches) {
-    const FitResult f = fit_primitive(PrimitiveType::Plane, p.samples.points, p.samples.normals, p.samples.weights);
-    ASSERT_TRUE(f.status.ok()) << f.status.error;
-    fitted.push_back(f.primitive);
-    samples.push_back(p.samples);
-  }
-  const RelatedPrimitives r = relate_primitives(fitted, samples, {}, sigma, RelationOptions());
+  const std::vector<std::optional<Primitive>> fitted = fit_each(scene);
+  const RelatedPrimitives r = relate_primitives(fitted, samples_of(scene), scene.contacts, sigma, RelationOptions());
   ASSERT_TRUE(r.status.ok()) << r.status.error;
   SCOPED_TRACE(describe(r.relations));
   EXPECT_EQ(r.dropped, 0);
