@@ -59,8 +59,8 @@ AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Eigen::Ma
     return out;
   }
   // A rough scan's segments deviate from their primitive by its roughness whatever their size.
-  const double roughness = is_known_scale(options.roughness) ? options.roughness : 0.0;
-  const double tolerance = options.tolerance > 0 ? options.tolerance : std::max(0.01 * diagonal, 3.0 * roughness);
+  const double tolerance =
+      options.tolerance > 0 ? options.tolerance : automatic_fit_tolerance(diagonal, options.roughness);
   const FitSample s = fit_subsample(points, normals, weights, kAutoFitScreenPoints);
   FitOptions screen_options = options.fit;
   screen_options.max_iterations = std::min(screen_options.max_iterations, 20);
@@ -75,7 +75,7 @@ AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Eigen::Ma
     const FitResult& c = out.candidates[std::size_t(t)];
     if (!c.status.ok())
       continue;
-    const double score = std::max(c.rms, 1e-6 * diagonal) * (1.0 + 0.5 * primitive_degrees_of_freedom(type));
+    const double score = type_score(c.rms, primitive_degrees_of_freedom(type), diagonal);
     const Primitive& p = c.primitive;
     bool eligible = c.rms <= tolerance;
     if (type == PrimitiveType::Sphere || type == PrimitiveType::Cylinder)

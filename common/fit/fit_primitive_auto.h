@@ -59,6 +59,20 @@ struct AutoFitResult
   std::vector<FitResult> candidates; // all tried, in PrimitiveType order
 };
 
+// The type choice's score (lower is better) of a fit of `dof` parameters with this RMS over points whose bounding
+// box has this diagonal; see Choice above.
+constexpr double kTypePenaltyPerParameter = 0.5;
+inline double type_score(double rms, int dof, double diagonal)
+{
+  return std::max(rms, 1e-6 * diagonal) * (1.0 + kTypePenaltyPerParameter * dof);
+}
+
+// The automatic tolerance: 1% of the points' bounding-box diagonal, or 3 x the roughness when larger.
+inline double automatic_fit_tolerance(double diagonal, double roughness)
+{
+  return std::max(0.01 * diagonal, 3.0 * (is_known_scale(roughness) ? roughness : 0.0));
+}
+
 // Points the candidate types are screened on; see Speed above.
 constexpr Eigen::Index kAutoFitScreenPoints = 300;
 
