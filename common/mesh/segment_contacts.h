@@ -4,7 +4,8 @@
 // Output: one SegmentContact per pair of segments a < b that share at least one edge: the number of
 //         face pairs across their border (about the border's length in edges) and a point of the border: of the
 //         pairs' centroid midpoints, the one nearest to their mean (the middle of a straight border; some
-//         point of a closed circular one, whose mean is its centre). Sorted by (a, b). Two faces are a pair
+//         point of a closed circular one, whose mean is its centre) and that mean (a straight border's mean
+//         distance from a line is the mean's). Sorted by (a, b). Two faces are a pair
 //         as in face_adjacency.h: they share an edge (a non-manifold edge pairs all of its faces, a pair
 //         sharing two edges counts once; deleted faces, faces with an invalid vertex and an edge joining a
 //         vertex to itself pair nothing). Faces with non-finite coordinates take no part.
@@ -33,6 +34,7 @@ struct SegmentContact
   int a = -1, b = -1;  // a < b
   int pairs = 0;       // face pairs across the border
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  // of the pairs' centroid midpoints
 };
 
 namespace contacts_detail {
@@ -120,6 +122,7 @@ std::vector<SegmentContact> segment_contacts(const MeshType& m, const std::vecto
       ++c.pairs;
     }
     mean /= double(c.pairs);
+    c.mean = mean;
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t j = first; j < i; ++j)
       if ((std::get<2>(border[j]) - mean).squaredNorm() < best) {

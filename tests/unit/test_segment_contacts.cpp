@@ -67,6 +67,7 @@ std::vector<SegmentContact> contacts_by_adjacency(const M& m, const std::vector<
     for (const Eigen::Vector3d& p : mid)
       mean += p;
     mean /= double(mid.size());
+    c.mean = mean;
     double best = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : mid)
       if ((p - mean).squaredNorm() < best) {
@@ -107,6 +108,9 @@ TYPED_TEST(SegmentContactsTest, QuartersOfAGridTouchAlongTheirCommonEdges)
     // The point lies on the common edge's side of both quarters: within a square of the line x = 4 or y = 4.
     const Eigen::Vector3d& p = contacts[std::size_t(k)].point;
     EXPECT_LT(std::min(std::abs(p.x() - n / 2), std::abs(p.y() - n / 2)), 1.0) << k;
+    // The mean of a straight border's points lies as far from the line as they do on average.
+    const Eigen::Vector3d& mean = contacts[std::size_t(k)].mean;
+    EXPECT_LT(std::min(std::abs(mean.x() - n / 2), std::abs(mean.y() - n / 2)), 1.0) << k;
   }
 }
 
@@ -145,6 +149,7 @@ TYPED_TEST(SegmentContactsTest, FindsTheFacePairsOfTheFaceAdjacency)
       EXPECT_EQ(got[k].b, want[k].b);
       EXPECT_EQ(got[k].pairs, want[k].pairs) << "trial " << trial << ", contact " << k;
       EXPECT_EQ(got[k].point, want[k].point) << "trial " << trial << ", contact " << k;
+      EXPECT_LT((got[k].mean - want[k].mean).norm(), 1e-9) << "trial " << trial << ", contact " << k;
     }
   }
 }
