@@ -1,0 +1,169 @@
+#include "common/relate/fit_edge_blends.h"
+
+#include "common/fit/fit_primitive_auto.h"
+#include "common/geometry/closest_point_on_primitive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace primitive_edit {
+
+namespace {
+
+// sqrt(sum(w * min(d, cap)^2) / sum(w)) over the samples, d given by `distance`.
+template <class Distance>
+double capped_rms(const SegmentSamples& s, double cap, Distance distance)
+{
+  double sum = 0, weight = 0;
+  for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+    const double d = std::min(distance(Eigen::Vector3d(s.points.row(i).transpose())), cap);
+    sum += s.weights[i] * d * d;
+    weight += s.weights[i];
+  }
+  return weight > 0 ? std::sqrt(sum / weight) : std::numeric_limits<double>::infinity();
+}
+
+// At most `count` evenly strided samples (their weights as they are: the RMS compared are weighted means).
+SegmentSamples strided_samples(const SegmentSamples& s, Eigen::Index count)
+{
+  const Eigen::Index n = s.points.rows(), m = std::min(n, count);
+  if (m == n)
+    return s;
+  SegmentSamples out;
+  out.points.resize(m, 3);
+  out.weights.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    out.points.row(i) = s.points.row((i * n) / m);
+    out.weights[i] = s.weights[(i * n) / m];
+  }
+  return out;
+}
+
+// The blend of segment s between planes a and b whose borders with it agree, or std::nullopt.
+std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primitive& pa, const Primitive& pb,
+                                              const SegmentContact& with_a, const SegmentContact& with_b,
+                                              const SegmentSamples& samples, double cap,
+                                              const std::optional<PrimitiveType>& type)
+{
+  // Each border lies on its plane's kept half, beyond the edge as seen from the other border.
+  const Eigen::Vector3d& ma = with_a.mean;
+  const Eigen::Vector3d& mb = with_b.mean;
+  const std::optional<EdgeSection> section = edge_section(pa, pb, 2 * ma - mb, 2 * mb - ma, 0.5 * (ma + mb));
+  if (!section)
+    return std::nullopt;
+  const double ta = distance_along(*section, section->ray_a, with_a.mean);
+  const double tb = distance_along(*section, section->ray_b, with_b.mean);
+  const double setback = 0.5 * (ta + tb);
+  if (!(ta > 0 && tb > 0) || !(std::abs(ta - tb) <= std::max(cap, kEdgeBlendBorderShare * setback)))
+    return std::nullopt;
+  std::optional<SegmentEdgeBlend> best;
+  for (BlendForm form : {BlendForm::Fillet, BlendForm::Chamfer}) {
+    if (type && *type != (form == BlendForm::Fillet ? PrimitiveType::Cylinder : PrimitiveType::Plane))
+      continue;
+    const double rms = capped_rms(samples, cap, [&](const Eigen::Vector3d& p) {
+      return edge_blend_distance(*section, form, setback, p);
+    });
+    if (!best || rms < best->rms)
+      best = SegmentEdgeBlend{s, a, b, *section, form, setback, rms, edge_blend_primitive(*section, form, setback)};
+  }
+  if (!best)
+    return std::nullopt;
+  double inside = 0, all = 0;
+  for (Eigen::Index i = 0; i < samples.points.rows(); ++i) {
+    all += samples.weights[i];
+    if (in_edge_blend_sector(*section, setback, samples.points.row(i).transpose()))
+      inside += samples.weights[i];
+  }
+  if (!(inside >= kEdgeBlendSectorShare * all) || !primitive_is_valid(best->primitive))
+    return std::nullopt;
+  return best;
+}
+
+// The best-scoring blend of segment s between any two of the planes it touches, better than its own primitive.
+std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::optional<Primitive>>& primitives,
+                                              const SegmentSamples& own,
+                                              const std::vector<const SegmentContact*>& touching, double roughness,
+                                              double tolerance, const std::optional<PrimitiveType>& type)
+{
+  const double diagonal = (own.points.colwise().maxCoeff() - own.points.colwise().minCoeff()).norm();
+  const double cap = tolerance > 0 ? tolerance : automatic_fit_tolerance(diagonal, roughness);
+  if (!(cap > 0) || !std::isfinite(cap))
+    return std::nullopt;
+  const std::optional<Primitive>& mine = primitives[std::size_t(s)];
+  double best_score = std::numeric_limits<double>::infinity(), own_rms = cap;
+  if (mine) {
+    own_rms = capped_rms(own, cap, [&](const Eigen::Vector3d& p) {
+      return std::abs(project_onto_primitive(*mine, p).signed_distance);
+    });
+    best_score = type_score(own_rms, primitive_degrees_of_freedom(mine->type), diagonal);
+  }
+  std::optional<SegmentEdgeBlend> chosen;
+  for (std::size_t i = 0; i < touching.size(); ++i)
+    for (std::size_t j = i + 1; j < touching.size(); ++j) {
+      const int a = touching[i]->a == s ? touching[i]->b : touching[i]->a;
+      const int b = touching[j]->a == s ? touching[j]->b : touching[j]->a;
+      const std::optional<SegmentEdgeBlend> blend = blend_between(s, a, b, *primitives[std::size_t(a)],
+                                                                  *primitives[std::size_t(b)], *touching[i],
+                                                                  *touching[j], own, cap, type);
+      if (!blend || !(blend->rms <= std::min(cap, kEdgeBlendRmsRatio * own_rms)))
+        continue;
+      const double score = type_score(blend->rms, 1, diagonal);
+      if (score < best_score) {
+        best_score = score;
+        chosen = blend;
+      }
+    }
+  return chosen;
+}
+
+} // namespace
+
+std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Primitive>>& primitives,
+                                              const std::vector<SegmentSamples>& samples,
+                                              const std::vector<SegmentContact>& contacts, double roughness,
+                                              double tolerance, const std::vector<std::optional<PrimitiveType>>& types)
+{
+  const int count = int(std::min(primitives.size(), samples.size()));
+  auto is_plane = [&](int k) {
+    return k >= 0 && k < count && primitives[std::size_t(k)] &&
+           primitives[std::size_t(k)]->type == PrimitiveType::Plane && primitive_is_valid(*primitives[std::size_t(k)]);
+  };
+  std::vector<std::vector<const SegmentContact*>> planes_of(std::size_t(std::max(count, 0)));
+  for (const SegmentContact& c : contacts) {
+    if (c.a < 0 || c.b < 0 || c.a >= count || c.b >= count || c.a == c.b || !c.mean.allFinite())
+      continue;
+    if (is_plane(c.b))
+      planes_of[std::size_t(c.a)].push_back(&c);
+    if (is_plane(c.a))
+      planes_of[std::size_t(c.b)].push_back(&c);
+  }
+  std::vector<SegmentEdgeBlend> candidates;
+  for (int s = 0; s < count; ++s) {
+    const SegmentSamples& own = samples[std::size_t(s)];
+    if (planes_of[std::size_t(s)].size() < 2 || own.points.rows() == 0 || own.weights.size() != own.points.rows() ||
+        !own.points.allFinite() || !own.weights.allFinite() || (own.weights.array() < 0).any())
+      continue;
+    if (std::optional<SegmentEdgeBlend> blend =
+            best_blend_of(s, primitives, strided_samples(own, kEdgeBlendPoints), planes_of[std::size_t(s)], roughness,
+                          tolerance,
+                          std::size_t(s) < types.size() ? types[std::size_t(s)] : std::nullopt))
+      candidates.push_back(*blend);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const SegmentEdgeBlend& x, const SegmentEdgeBlend& y) { return x.setback < y.setback; });
+  enum Role : char { kNone, kBlend, kBlendsPlane };
+  std::vector<char> role(std::size_t(std::max(count, 0)), kNone);
+  std::vector<SegmentEdgeBlend> out;
+  for (const SegmentEdgeBlend& c : candidates) {
+    if (role[std::size_t(c.segment)] != kNone || role[std::size_t(c.plane_a)] == kBlend ||
+        role[std::size_t(c.plane_b)] == kBlend)
+      continue;
+    role[std::size_t(c.segment)] = kBlend;
+    role[std::size_t(c.plane_a)] = role[std::size_t(c.plane_b)] = kBlendsPlane;
+    out.push_back(c);
+  }
+  return out;
+}
+
+} // namespace primitive_edit

@@ -1,0 +1,67 @@
+// fit_edge_blends.h: segments that round or bevel the edge of two plane segments get the fillet or chamfer
+// tangent to both planes, when it explains them as a blend should.
+//
+// Input:  per segment its primitive after the relations' refit (std::nullopt: free-form) and its samples
+//         (gather_segment_samples.h), the segments' contacts (segment_contacts.h), the scan's roughness and the
+//         fit tolerance (0: automatic, as fit_primitive_auto.h takes it), and the types asked per segment (may be
+//         empty; a segment asked to be a cylinder can only be a fillet, a plane only a chamfer, other types
+//         neither).
+// Output: one SegmentEdgeBlend per segment given a blend: the segment, its two planes, the section, the form, the
+//         setback, the blend's surface and its RMS. The caller replaces the segments' primitives.
+// Method: on a rough scan a fillet or chamfer narrower than a few times the roughness is at the noise floor of a
+//         free fit: on the bundled CT scan's true segments the 1.5 mm fillets came out as planes at 45 degrees,
+//         and their least-squares radius, even with the planes given, about half the true one (the scan's
+//         profile there is flatter than the CAD's). Its borders are not: a blend meets each plane along a tangent
+//         line, and the segment's border with that plane runs there (1.55 and 1.67 mm from the edge for a
+//         1.5 mm fillet). So for each segment touching two plane segments whose planes meet at an angle
+//         (edge_blend.h), the setback is the mean of its two borders' distances from the edge (the contacts'
+//         means), which must agree within the tolerance or kEdgeBlendBorderShare of the setback. The form, fillet
+//         or chamfer, is the one of the smaller RMS, sqrt(sum(w * min(d, tolerance)^2) / sum(w)) over all the
+//         segment's samples (at most kEdgeBlendPoints of them, evenly strided, for this and all the scores below).
+//         The blend is a candidate when
+//         - at least kEdgeBlendSectorShare of the segment's weight lies between its tangent lines;
+//         - its RMS is within the tolerance and at most kEdgeBlendRmsRatio times that of the segment's own
+//           primitive, measured alike (the blend's single parameter must not buy a worse fit), and
+//         - its score (type_score, one parameter) is below the own primitive's.
+//         Of several pairs of planes, the best score is the segment's candidate. A face between two planes is
+//         either their blend or a plane with blends on both sides (a 3 mm wall between a fillet and a chamfer
+//         scores as a large fillet of them too): the candidates are taken narrowest first, and a segment that
+//         is already a blend's plane, or whose planes are blends, is skipped.
+// Cost:   O(contacts) to list each segment's planes, then per segment O(kEdgeBlendPoints) for its own RMS and per
+//         pair of its planes whose borders agree O(kEdgeBlendPoints) for each form.
+#ifndef PRIMITIVE_EDIT_FIT_EDGE_BLENDS_H
+#define PRIMITIVE_EDIT_FIT_EDGE_BLENDS_H
+
+#include "common/base/primitive.h"
+#include "common/geometry/edge_blend.h"
+#include "common/mesh/gather_segment_samples.h"
+#include "common/mesh/segment_contacts.h"
+
+#include <optional>
+#include <vector>
+
+namespace primitive_edit {
+
+constexpr Eigen::Index kEdgeBlendPoints = 2000; // samples of a segment its blends and own primitive are scored on
+constexpr double kEdgeBlendSectorShare = 0.7;
+constexpr double kEdgeBlendBorderShare = 0.5;
+constexpr double kEdgeBlendRmsRatio = 1.25;
+
+struct SegmentEdgeBlend
+{
+  int segment = -1, plane_a = -1, plane_b = -1;
+  EdgeSection section;
+  BlendForm form = BlendForm::Fillet;
+  double setback = 0, rms = 0;
+  Primitive primitive;
+};
+
+std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Primitive>>& primitives,
+                                              const std::vector<SegmentSamples>& samples,
+                                              const std::vector<SegmentContact>& contacts, double roughness,
+                                              double tolerance,
+                                              const std::vector<std::optional<PrimitiveType>>& types = {});
+
+} // namespace primitive_edit
+
+#endif
