@@ -350,6 +350,10 @@ int main(int argc, char** argv)
                 result.relation_seconds);
     for (const Relation& r : result.relations)
       std::printf(" %s(%d,%d)", relation_kind_name(r.kind), r.a, r.b);
+    std::printf("\nblends between planes: %zu:", result.blends.size());
+    for (const SegmentEdgeBlend& b : result.blends)
+      std::printf(" %s %d of (%d,%d) setback %.3f", b.form == BlendForm::Fillet ? "fillet" : "chamfer", b.segment,
+                  b.plane_a, b.plane_b, b.setback);
     std::printf("\n");
   }
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner of %d "

@@ -136,7 +136,10 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                              "and 45 degree faces, coaxial and concentric features, coplanar faces, equal radii, "
                              "fillets tangent to the faces they round) and refit all primitives together under "
                              "them. A relation is kept only if it raises no segment's fit error by more than "
-                             "Relation Cost; tilted or free features stay as fitted.");
+                             "Relation Cost; tilted or free features stay as fitted. Then a segment lying between "
+                             "two planes, along their edge, becomes the fillet (cylinder) or chamfer (plane) "
+                             "tangent to both, where its borders with them lie, when that explains it as well as "
+                             "its own fit.");
     parlst.addFloat("RelationAngle", 10, "Relation Angle (degrees)",
                               "Directions within this angle of parallel, perpendicular or 45 degrees are "
                               "tested as related (between 0 and 90).");
@@ -343,4 +346,17 @@ void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegments
       r.relations_dropped, 1000 * r.relation_seconds);
   for (std::size_t i = 0; i < r.relations.size() && i < 100; ++i)
     run.logf("  relation: %s", describe_relation(r.relations[i], r.primitives).c_str());
+  if (r.blends.empty())
+    return;
+  run.logf("%s: %d segments between two planes fitted as the fillet or chamfer tangent to both:", qUtf8Printable(name),
+      int(r.blends.size()));
+  for (std::size_t i = 0; i < r.blends.size() && i < 100; ++i) {
+    const SegmentEdgeBlend& b = r.blends[i];
+    if (b.form == BlendForm::Fillet)
+      run.logf("  segment %d: fillet of segments %d and %d, radius %.4g", b.segment, b.plane_a, b.plane_b,
+          b.primitive.radius);
+    else
+      run.logf("  segment %d: chamfer of segments %d and %d, %.4g from their edge", b.segment, b.plane_a, b.plane_b,
+          b.setback);
+  }
 }

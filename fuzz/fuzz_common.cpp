@@ -54,7 +54,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <type_traits>
@@ -343,6 +345,13 @@ void run(Decoder& in)
         fitted += r.primitives[size_t(s)] ? 1 : 0;
       }
       FUZZ_CHECK(fitted == r.fitted && r.fitted_area <= r.total_area && std::isfinite(r.total_area));
+      FUZZ_CHECK(std::accumulate(std::begin(r.per_type), std::end(r.per_type), 0) == r.fitted);
+      for (const SegmentEdgeBlend& b : r.blends) {
+        const std::optional<Primitive>& p = r.primitives[size_t(b.segment)];
+        FUZZ_CHECK(p && p->type == b.primitive.type && primitive_is_valid(*p));
+        if (size_t(b.segment) < options.types.size() && options.types[size_t(b.segment)])
+          FUZZ_CHECK(*options.types[size_t(b.segment)] == p->type);
+      }
       std::ostringstream json;
       write_fits_json(json, r, "fuzz \"mesh\"\n", false);
       const std::string text = json.str();

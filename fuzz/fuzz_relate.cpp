@@ -6,9 +6,12 @@
 // its primitive with noise and special values, and a "fitted" primitive: its own, slightly tilted and moved, or
 // a decoded one (valid or not), or none. Contacts between segments, the noise, the options and the fixed
 // segments are decoded too. Entry point: relate_primitives (direction and position detection, the refits, the
-// check). Invariants: bad options are refused with the primitives untouched; otherwise every relation joins
-// two distinct segments that had a valid primitive, a segment without one stays without, every relation kept
-// holds after the refit, the refitted primitives are valid, and held segments do not move.
+// check), then fit_edge_blends on the refitted primitives. Invariants: bad options are refused with the
+// primitives untouched; otherwise every relation joins two distinct segments that had a valid primitive, a
+// segment without one stays without, every relation kept holds after the refit, the refitted primitives are
+// valid, and held segments do not move; each fillet or chamfer lies between two planes that are no blends
+// (check_edge_blends).
+#include "common/relate/fit_edge_blends.h"
 #include "common/relate/relate_primitives.h"
 #include "fuzz/fuzz_input.h"
 
@@ -75,6 +78,37 @@ bool same(const Primitive& a, const Primitive& b)
          bits(a.half_angle, b.half_angle);
 }
 
+// Fillets and chamfers between the refitted planes: each blend is a distinct segment between two distinct valid
+// planes that are no blends, of the form the type asked allows, valid, with a finite RMS and a positive setback.
+void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>& primitives,
+                       const std::vector<SegmentSamples>& samples, const std::vector<SegmentContact>& contacts,
+                       double noise)
+{
+  const int count = int(primitives.size());
+  std::vector<std::optional<PrimitiveType>> types(in.u8() % (count + 1));
+  for (auto& t : types)
+    if (in.bit())
+      t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+  const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(primitives, samples, contacts, noise, in.special(0.1),
+                                                               types);
+  std::vector<char> blend(std::size_t(count), 0);
+  for (const SegmentEdgeBlend& b : blends) {
+    FUZZ_CHECK(b.segment >= 0 && b.segment < count && !blend[std::size_t(b.segment)]);
+    blend[std::size_t(b.segment)] = 1;
+  }
+  for (const SegmentEdgeBlend& b : blends) {
+    for (int p : {b.plane_a, b.plane_b}) {
+      FUZZ_CHECK(p >= 0 && p < count && p != b.segment && !blend[std::size_t(p)] && primitives[std::size_t(p)]);
+      FUZZ_CHECK(primitives[std::size_t(p)]->type == PrimitiveType::Plane &&
+                 primitive_is_valid(*primitives[std::size_t(p)]));
+    }
+    FUZZ_CHECK(b.plane_a != b.plane_b && b.setback > 0 && std::isfinite(b.rms) && primitive_is_valid(b.primitive));
+    FUZZ_CHECK(b.primitive.type == (b.form == BlendForm::Fillet ? PrimitiveType::Cylinder : PrimitiveType::Plane));
+    if (std::size_t(b.segment) < types.size() && types[std::size_t(b.segment)])
+      FUZZ_CHECK(*types[std::size_t(b.segment)] == b.primitive.type);
+  }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -106,6 +140,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     c.b = int(in.u8() % (count + 1));
     c.pairs = 1 + in.u8();
     c.point = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
+    c.mean = in.bit() ? c.point : Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
   }
   const double noise = in.special(0.05);
   RelationOptions options;
@@ -159,5 +194,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     if (std::size_t(s) < fixed.size() && fixed[std::size_t(s)])
       FUZZ_CHECK(same(*before, *after));
   }
+  check_edge_blends(in, r.primitives, samples, contacts, noise);
   return 0;
 }

@@ -7,15 +7,17 @@
 //         whether to snap and how (SnapOptions), the threads (fit_segments.h), and a Progress.
 // Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
 //         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
-//         where free-form); the relations kept (with relations on) and how many the check dropped; the estimated
-//         roughness, counts per type, the fitted share of the area, the SnapReport and the time of each stage. With snap, the mesh's vertices
-//         lie on the primitives, the primitives are recorded on the mesh (segment_primitive_attribute.h) so
-//         that a later Snap Segment keeps sharp edges against them, and normals and bounding box are updated.
+//         where free-form); with relations on, the relations kept (then the tangencies of the fillets found
+//         between planes), how many the check dropped, and the segments given a fillet or chamfer between two
+//         planes; the estimated roughness, counts per type, the fitted share of the area, the SnapReport and
+//         the time of each stage. With snap, the mesh's vertices lie on the primitives, the primitives are
+//         recorded on the mesh (segment_primitive_attribute.h) so that a later Snap Segment keeps sharp edges
+//         against them, and normals and bounding box are updated.
 //         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
 //         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
 //         relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
-//         segment_contacts for the tangencies), snap_segments.
+//         segment_contacts for the tangencies), fit_edge_blends (with the same contacts), snap_segments.
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -28,6 +30,7 @@
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/mesh/update_normals_and_bounds.h"
 #include "common/mesh/segment_contacts.h"
+#include "common/relate/fit_edge_blends.h"
 #include "common/pipeline/fit_segments.h"
 #include "common/relate/relate_primitives.h"
 #include "common/snap/snap_segments.h"
@@ -62,13 +65,27 @@ struct FitAllSegmentsResult
   int fitted = 0;
   int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
   double fitted_area = 0, total_area = 0;
-  std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids
+  std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids, then the fillets' tangencies
+  std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   int relations_dropped = 0;        // found, then dropped by the check after the refit
   std::optional<SnapReport> snap;
   double fit_seconds = 0, relation_seconds = 0, snap_seconds = 0;  // roughness, samples and fits; relations; snapping
 
   int segment_count() const { return int(fits.size()); }
 };
+
+namespace fit_all_detail {
+
+// Gives segment s the primitive p, its FitResult measured over the inliers of p's robust weights (as a fit reports
+// it), and keeps the counts; false, with nothing changed, when p cannot be measured on the samples.
+bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples, int s, const Primitive& p);
+
+// The relations and the joint refit (relate_primitives), then the fillets and chamfers between planes
+// (fit_edge_blends, their tangencies added to the relations). A failed status when relate_primitives refuses.
+Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
+                        const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options);
+
+} // namespace fit_all_detail
 
 template <class MeshType>
 FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segment_of_face,
@@ -116,29 +133,11 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   if (options.relations && out.fitted >= 2) {
     t0 = Clock::now();
     report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
-    const RelatedPrimitives related = relate_primitives(out.primitives, samples, segment_contacts(m, segment_of_face),
-                                                        out.roughness, options.relation_options, {}, options.threads);
-    if (!related.status) {
-      out.status = Status::failure("relations: " + related.status.error);
+    const Status related =
+        fit_all_detail::relate_and_blend(out, samples, segment_contacts(m, segment_of_face), options);
+    if (!related) {
+      out.status = related;
       return out;
-    }
-    out.relations = related.relations;
-    out.relations_dropped = related.dropped;
-    for (int s = 0; s < count; ++s) {
-      const std::optional<Primitive>& p = related.primitives[std::size_t(s)];
-      if (!p || !out.fits[std::size_t(s)].status.ok())
-        continue;
-      // RMS and maximum residual as the fit reports them: over the inliers of the robust weights.
-      const SegmentSamples& seg = samples[std::size_t(s)];
-      const double floor = 1e-9 * std::max(seg.points.rows() ? (seg.points.colwise().maxCoeff() - seg.points.colwise().minCoeff()).norm() : 0.0, 1e-300);
-      Eigen::VectorXd used = refine_detail::tukey_weights(*p, seg.points, seg.weights, 1.0, floor);
-      for (Eigen::Index i = 0; i < used.size(); ++i)
-        used[i] = used[i] > 0 ? seg.weights[i] : 0.0;
-      FitResult refit = fit_residuals(*p, seg.points, used);
-      if (refit.status.ok()) {
-        out.fits[std::size_t(s)] = refit;
-        out.primitives[std::size_t(s)] = p;
-      }
     }
     out.relation_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   }

@@ -1,0 +1,68 @@
+#include "common/pipeline/fit_all_segments.h"
+
+namespace primitive_edit {
+namespace fit_all_detail {
+
+bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples, int s, const Primitive& p)
+{
+  const SegmentSamples& seg = samples[std::size_t(s)];
+  const double extent =
+      seg.points.rows() ? (seg.points.colwise().maxCoeff() - seg.points.colwise().minCoeff()).norm() : 0.0;
+  const double floor = 1e-9 * std::max(extent, 1e-300);
+  Eigen::VectorXd used = refine_detail::tukey_weights(p, seg.points, seg.weights, 1.0, floor);
+  for (Eigen::Index i = 0; i < used.size(); ++i)
+    used[i] = used[i] > 0 ? seg.weights[i] : 0.0;
+  const FitResult refit = fit_residuals(p, seg.points, used);
+  if (!refit.status.ok())
+    return false;
+  FitResult& fit = out.fits[std::size_t(s)];
+  if (fit.status.ok()) {
+    --out.per_type[int(fit.primitive.type)];
+  } else {
+    ++out.fitted;
+    out.fitted_area += seg.area;
+  }
+  ++out.per_type[int(p.type)];
+  fit = refit;
+  out.primitives[std::size_t(s)] = p;
+  return true;
+}
+
+Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
+                        const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options)
+{
+  const RelatedPrimitives related = relate_primitives(out.primitives, samples, contacts, out.roughness,
+                                                      options.relation_options, {}, options.threads);
+  if (!related.status)
+    return Status::failure("relations: " + related.status.error);
+  out.relations = related.relations;
+  out.relations_dropped = related.dropped;
+  for (int s = 0; s < out.segment_count(); ++s) {
+    const std::optional<Primitive>& p = related.primitives[std::size_t(s)];
+    if (p && out.fits[std::size_t(s)].status.ok())
+      take_primitive(out, samples, s, *p);
+  }
+  // Fillets and chamfers, given the planes they join as the relations hold them.
+  for (const SegmentEdgeBlend& b :
+       fit_edge_blends(out.primitives, samples, contacts, out.roughness, options.tolerance, options.types)) {
+    if (!take_primitive(out, samples, b.segment, b.primitive))
+      continue;
+    out.blends.push_back(b);
+    if (b.form != BlendForm::Fillet)
+      continue;
+    for (int plane : {b.plane_a, b.plane_b}) {
+      const Primitive& q = *out.primitives[std::size_t(plane)];
+      Relation r;
+      r.kind = RelationKind::Tangent;
+      r.a = b.segment;
+      r.b = plane;
+      r.sign = (b.primitive.origin - q.origin).dot(q.axis) < 0 ? -1.0 : 1.0;
+      r.contact = b.section.origin + b.setback * (plane == b.plane_a ? b.section.ray_a : b.section.ray_b);
+      out.relations.push_back(r);
+    }
+  }
+  return Status::success();
+}
+
+} // namespace fit_all_detail
+} // namespace primitive_edit
