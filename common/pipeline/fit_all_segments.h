@@ -30,8 +30,8 @@
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/mesh/update_normals_and_bounds.h"
 #include "common/mesh/segment_contacts.h"
-#include "common/relate/fit_edge_blends.h"
 #include "common/pipeline/fit_segments.h"
+#include "common/relate/fit_edge_blends.h"
 #include "common/relate/relate_primitives.h"
 #include "common/snap/snap_segments.h"
 
@@ -66,8 +66,8 @@ struct FitAllSegmentsResult
   int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
   double fitted_area = 0, total_area = 0;
   std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids, then the fillets' tangencies
-  std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   int relations_dropped = 0;        // found, then dropped by the check after the refit
+  std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   std::optional<SnapReport> snap;
   double fit_seconds = 0, relation_seconds = 0, snap_seconds = 0;  // roughness, samples and fits; relations; snapping
 
