@@ -1,6 +1,8 @@
 #include "common/relate/fit_edge_blends.h"
 
+#include "common/fit/check_fit_input.h"
 #include "common/fit/fit_primitive_auto.h"
+#include "common/fit/fit_subsample.h"
 #include "common/geometry/closest_point_on_primitive.h"
 
 #include <algorithm>
@@ -13,7 +15,7 @@ namespace {
 
 // sqrt(sum(w * min(d, cap)^2) / sum(w)) over the samples, d given by `distance`.
 template <class Distance>
-double capped_rms(const SegmentSamples& s, double cap, Distance distance)
+double capped_rms(const FitSample& s, double cap, Distance distance)
 {
   double sum = 0, weight = 0;
   for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
@@ -24,26 +26,10 @@ double capped_rms(const SegmentSamples& s, double cap, Distance distance)
   return weight > 0 ? std::sqrt(sum / weight) : std::numeric_limits<double>::infinity();
 }
 
-// At most `count` evenly strided samples (their weights as they are: the RMS compared are weighted means).
-SegmentSamples strided_samples(const SegmentSamples& s, Eigen::Index count)
-{
-  const Eigen::Index n = s.points.rows(), m = std::min(n, count);
-  if (m == n)
-    return s;
-  SegmentSamples out;
-  out.points.resize(m, 3);
-  out.weights.resize(m);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    out.points.row(i) = s.points.row((i * n) / m);
-    out.weights[i] = s.weights[(i * n) / m];
-  }
-  return out;
-}
-
 // The blend of segment s between planes a and b whose borders with it agree, or std::nullopt.
 std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primitive& pa, const Primitive& pb,
                                               const SegmentContact& with_a, const SegmentContact& with_b,
-                                              const SegmentSamples& samples, double cap,
+                                              const FitSample& samples, double cap,
                                               const std::optional<PrimitiveType>& type)
 {
   // Each border lies on its plane's kept half, beyond the edge as seen from the other border.
@@ -82,7 +68,7 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
 
 // The best-scoring blend of segment s between any two of the planes it touches, better than its own primitive.
 std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::optional<Primitive>>& primitives,
-                                              const SegmentSamples& own,
+                                              const FitSample& own,
                                               const std::vector<const SegmentContact*>& touching, double roughness,
                                               double tolerance, const std::optional<PrimitiveType>& type)
 {
@@ -141,12 +127,12 @@ std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Pr
   std::vector<SegmentEdgeBlend> candidates;
   for (int s = 0; s < count; ++s) {
     const SegmentSamples& own = samples[std::size_t(s)];
-    if (planes_of[std::size_t(s)].size() < 2 || own.points.rows() == 0 || own.weights.size() != own.points.rows() ||
-        !own.points.allFinite() || !own.weights.allFinite() || (own.weights.array() < 0).any())
+    if (planes_of[std::size_t(s)].size() < 2 || own.weights.size() != own.points.rows() ||
+        !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
       continue;
     if (std::optional<SegmentEdgeBlend> blend =
-            best_blend_of(s, primitives, strided_samples(own, kEdgeBlendPoints), planes_of[std::size_t(s)], roughness,
-                          tolerance,
+            best_blend_of(s, primitives, fit_subsample(own.points, Eigen::MatrixX3d(), own.weights, kEdgeBlendPoints),
+                          planes_of[std::size_t(s)], roughness, tolerance,
                           std::size_t(s) < types.size() ? types[std::size_t(s)] : std::nullopt))
       candidates.push_back(*blend);
   }
