@@ -1,5 +1,6 @@
 #include "common/relate/fit_edge_blends.h"
 
+#include "common/fit/capped_rms.h"
 #include "common/fit/check_fit_input.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/fit_subsample.h"
@@ -12,19 +13,6 @@
 namespace primitive_edit {
 
 namespace {
-
-// sqrt(sum(w * min(d, cap)^2) / sum(w)) over the samples, d given by `distance`.
-template <class Distance>
-double capped_rms(const FitSample& s, double cap, Distance distance)
-{
-  double sum = 0, weight = 0;
-  for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
-    const double d = std::min(distance(Eigen::Vector3d(s.points.row(i).transpose())), cap);
-    sum += s.weights[i] * d * d;
-    weight += s.weights[i];
-  }
-  return weight > 0 ? std::sqrt(sum / weight) : std::numeric_limits<double>::infinity();
-}
 
 // The blend of segment s between planes a and b whose borders with it agree, or std::nullopt.
 std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primitive& pa, const Primitive& pb,
