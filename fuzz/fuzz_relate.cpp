@@ -6,12 +6,13 @@
 // its primitive with noise and special values, and a "fitted" primitive: its own, slightly tilted and moved, or
 // a decoded one (valid or not), or none. Contacts between segments, the noise, the options and the fixed
 // segments are decoded too. Entry point: relate_primitives (direction and position detection, the refits, the
-// check), then fit_edge_blends on the refitted primitives. Invariants: bad options are refused with the
+// check), then fit_edge_blends and fit_profiles_about_axes on the refitted primitives. Invariants: bad options are refused with the
 // primitives untouched; otherwise every relation joins two distinct segments that had a valid primitive, a
 // segment without one stays without, every relation kept holds after the refit, the refitted primitives are
 // valid, and held segments do not move; each fillet or chamfer lies between two planes that are no blends
-// (check_edge_blends).
+// (check_edge_blends); each profile about an axis lies on a cylinder segment's axis (check_profiles).
 #include "common/relate/fit_edge_blends.h"
+#include "common/relate/fit_profiles_about_axes.h"
 #include "common/relate/relate_primitives.h"
 #include "fuzz/fuzz_input.h"
 
@@ -109,6 +110,43 @@ void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>&
   }
 }
 
+// fit_profiles_about_axes on the refitted primitives, with decoded types, tolerance, angle and distance: each
+// profile is a distinct segment that had a valid sphere, cone or torus, now a valid one of those (the type asked,
+// if any) on the axis of a distinct valid cylinder segment.
+void check_profiles(Decoder& in, const std::vector<std::optional<Primitive>>& primitives,
+                    const std::vector<SegmentSamples>& samples, double noise)
+{
+  const int count = int(primitives.size());
+  std::vector<std::optional<PrimitiveType>> types(in.u8() % (count + 1));
+  for (auto& t : types)
+    if (in.bit())
+      t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+  const double tolerance = in.special(0.1), angle = in.special(10), distance = in.special(0.5);
+  const std::vector<SegmentProfile> profiles =
+      fit_profiles_about_axes(primitives, samples, noise, tolerance, angle, distance, types);
+  std::vector<char> seen(std::size_t(count), 0);
+  for (const SegmentProfile& q : profiles) {
+    FUZZ_CHECK(q.segment >= 0 && q.segment < count && !seen[std::size_t(q.segment)]);
+    seen[std::size_t(q.segment)] = 1;
+    FUZZ_CHECK(q.axis_segment >= 0 && q.axis_segment < count && q.axis_segment != q.segment);
+    const std::optional<Primitive>& own = primitives[std::size_t(q.segment)];
+    const std::optional<Primitive>& c = primitives[std::size_t(q.axis_segment)];
+    FUZZ_CHECK(own && primitive_is_valid(*own) && own->type != PrimitiveType::Plane &&
+               own->type != PrimitiveType::Cylinder);
+    FUZZ_CHECK(c && c->type == PrimitiveType::Cylinder && primitive_is_valid(*c));
+    const Primitive& p = q.primitive;
+    FUZZ_CHECK(primitive_is_valid(p) && p.type != PrimitiveType::Plane && p.type != PrimitiveType::Cylinder);
+    FUZZ_CHECK(std::isfinite(q.rms) && q.rms >= 0);
+    if (std::size_t(q.segment) < types.size() && types[std::size_t(q.segment)])
+      FUZZ_CHECK(*types[std::size_t(q.segment)] == p.type);
+    const Eigen::Vector3d d = p.origin - c->origin;
+    const double scale = 1 + d.norm() + c->origin.norm();
+    FUZZ_CHECK((d - d.dot(c->axis) * c->axis).norm() <= 1e-6 * scale);
+    if (p.type != PrimitiveType::Sphere)
+      FUZZ_CHECK(std::abs(std::abs(p.axis.dot(c->axis)) - 1) <= 1e-9);
+  }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -195,5 +233,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       FUZZ_CHECK(same(*before, *after));
   }
   check_edge_blends(in, r.primitives, samples, contacts, noise);
+  check_profiles(in, r.primitives, samples, noise);
   return 0;
 }

@@ -1,0 +1,124 @@
+#include "common/relate/fit_profiles_about_axes.h"
+
+#include "common/base/constants.h"
+#include "common/fit/capped_rms.h"
+#include "common/fit/check_fit_input.h"
+#include "common/fit/fit_primitive_auto.h"
+#include "common/fit/fit_profile_about_axis.h"
+#include "common/fit/fit_subsample.h"
+#include "common/geometry/closest_point_on_primitive.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace primitive_edit {
+
+namespace {
+
+bool is_revolution(PrimitiveType t)
+{
+  return t == PrimitiveType::Sphere || t == PrimitiveType::Cone || t == PrimitiveType::Torus;
+}
+
+// Whether p turns about the cylinder c's axis: a sphere's centre, or the point of a cone's or torus's axis
+// nearest to the segment's centroid (a cone's apex can lie far beyond its data), within `distance` of the axis,
+// and the axes within the angle.
+bool turns_about(const Primitive& p, const Primitive& c, const Eigen::Vector3d& centroid, double cos_angle,
+                 double distance)
+{
+  Eigen::Vector3d on_own_axis = p.origin;
+  if (p.type != PrimitiveType::Sphere) {
+    if (!(std::abs(p.axis.dot(c.axis)) >= cos_angle))
+      return false;
+    on_own_axis += (centroid - p.origin).dot(p.axis) * p.axis;
+  }
+  const Eigen::Vector3d d = on_own_axis - c.origin;
+  return (d - d.dot(c.axis) * c.axis).norm() <= distance;
+}
+
+// The primitive of `type` about c's axis that fits the samples, refitted once without the samples beyond the cap.
+std::optional<Primitive> profile_about(const FitSample& s, const Primitive& c, PrimitiveType type, double cap)
+{
+  std::optional<Primitive> q = fit_profile_about_axis(s.points, s.weights, c.origin, c.axis, type);
+  if (!q)
+    return q;
+  Eigen::VectorXd near = s.weights;
+  for (Eigen::Index i = 0; i < near.size(); ++i)
+    if (!(std::abs(project_onto_primitive(*q, s.points.row(i).transpose()).signed_distance) <= cap))
+      near[i] = 0;
+  if (std::optional<Primitive> again = fit_profile_about_axis(s.points, near, c.origin, c.axis, type))
+    q = again;
+  return q;
+}
+
+} // namespace
+
+std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optional<Primitive>>& primitives,
+                                                    const std::vector<SegmentSamples>& samples, double roughness,
+                                                    double tolerance, double angle_deg, double distance,
+                                                    const std::vector<std::optional<PrimitiveType>>& types)
+{
+  std::vector<SegmentProfile> out;
+  const int count = int(std::min(primitives.size(), samples.size()));
+  if (!(angle_deg >= 0 && angle_deg < 90) || !(distance > 0) || !std::isfinite(distance))
+    return out;
+  const double cos_angle = std::cos(radians_from_degrees(angle_deg));
+  std::vector<int> axes;
+  for (int s = 0; s < count; ++s) {
+    const std::optional<Primitive>& p = primitives[std::size_t(s)];
+    if (p && p->type == PrimitiveType::Cylinder && primitive_is_valid(*p))
+      axes.push_back(s);
+  }
+  for (int s = 0; s < count && !axes.empty(); ++s) {
+    const std::optional<Primitive>& mine = primitives[std::size_t(s)];
+    const bool typed = std::size_t(s) < types.size() && types[std::size_t(s)].has_value();
+    const PrimitiveType asked = typed ? *types[std::size_t(s)] : mine ? mine->type : PrimitiveType::Plane;
+    const SegmentSamples& own = samples[std::size_t(s)];
+    if (!mine || !is_revolution(mine->type) || !primitive_is_valid(*mine) ||
+        !is_revolution(asked) ||
+        own.weights.size() != own.points.rows() ||
+        !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
+      continue;
+    const FitSample sample = fit_subsample(own.points, Eigen::MatrixX3d(), own.weights, kProfilePoints);
+    const double diagonal = (sample.points.colwise().maxCoeff() - sample.points.colwise().minCoeff()).norm();
+    const double cap = tolerance > 0 ? tolerance : automatic_fit_tolerance(diagonal, roughness);
+    const double weight = sample.weights.sum();
+    if (!(cap > 0) || !std::isfinite(cap) || !(weight > 0))
+      continue;
+    const Eigen::Vector3d centroid = (sample.weights.transpose() * sample.points).transpose() / weight;
+    auto rms_of = [&](const Primitive& q) {
+      return capped_rms(sample, cap, [&](const Eigen::Vector3d& x) {
+        return std::abs(project_onto_primitive(q, x).signed_distance);
+      });
+    };
+    const double own_rms = rms_of(*mine);
+    double best_score = type_score(own_rms, primitive_degrees_of_freedom(mine->type), diagonal);
+    std::optional<SegmentProfile> best;
+    for (int a : axes) {
+      const Primitive& c = *primitives[std::size_t(a)];
+      if (a == s || !turns_about(*mine, c, centroid, cos_angle, distance))
+        continue;
+      for (PrimitiveType type :
+           {PrimitiveType::Cone, PrimitiveType::Sphere, PrimitiveType::Torus}) {
+        if (typed && asked != type)
+          continue;
+        const std::optional<Primitive> q = profile_about(sample, c, type, cap);
+        if (!q)
+          continue;
+        const double rms = rms_of(*q);
+        if (!(rms <= std::min(cap, kProfileRmsRatio * own_rms)))
+          continue;
+        const double score = type_score(rms, profile_degrees_of_freedom(type), diagonal);
+        if (score < best_score) {
+          best_score = score;
+          best = SegmentProfile{s, a, rms, *q};
+        }
+      }
+    }
+    if (best)
+      out.push_back(*best);
+  }
+  return out;
+}
+
+} // namespace primitive_edit

@@ -1,0 +1,245 @@
+// Surfaces of revolution about a given axis (common/fit/fit_profile_about_axis.h) and segments refitted about a
+// cylinder segment's axis (common/relate/fit_profiles_about_axes.h), on a synthetic boss: a bore of radius 4 about
+// a tilted axis and the fillet round the boss's foot, a band of a torus of tube radius 1.5. A band about the axis
+// gets its profile's type there; a band off the axis or tilted from it stays as fitted.
+#include "common/fit/fit_primitive.h"
+#include "common/fit/fit_profile_about_axis.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/relate/fit_profiles_about_axes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace primitive_edit;
+
+const Eigen::Vector3d kAxisPoint(3, -2, 1);
+const Eigen::Vector3d kAxis = Eigen::Vector3d(0.1, -0.2, 1).normalized();
+
+// n points of the surface swept about (point, axis) by profile(u) = (r, h), u in [0, 1), with Gaussian noise of
+// sigma along the profile's normal (r, h) -> normal(u).
+SegmentSamples revolved(const Eigen::Vector3d& point, const Eigen::Vector3d& axis,
+                        const std::function<Eigen::Vector2d(double)>& profile,
+                        const std::function<Eigen::Vector2d(double)>& normal, int n, double sigma, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::normal_distribution<double> N(0.0, 1.0);
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  SegmentSamples s;
+  s.points.resize(n, 3);
+  s.normals.resize(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double u = U(rng), phi = 2 * kPi * U(rng), e = sigma * N(rng);
+    const Eigen::Vector2d rh = profile(u) + e * normal(u);
+    const Eigen::Vector3d radial = std::cos(phi) * e1 + std::sin(phi) * e2;
+    s.points.row(i) = (point + rh.y() * axis + rh.x() * radial).transpose();
+    s.normals.row(i) = (normal(u).x() * radial + normal(u).y() * axis).transpose();
+  }
+  s.area = 1;
+  s.weights = Eigen::VectorXd::Constant(n, 1.0 / n);
+  return s;
+}
+
+// The torus band of tube radius `tube` whose tube centre stands at (r0, h0) of the meridian, from angle a0 to a1
+// (0: facing outwards, pi/2: upwards).
+SegmentSamples torus_band(const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double r0, double h0,
+                          double tube, double a0, double a1, int n, double sigma, unsigned seed)
+{
+  auto dir = [=](double u) -> Eigen::Vector2d {
+    const double a = a0 + u * (a1 - a0);
+    return Eigen::Vector2d(std::cos(a), std::sin(a));
+  };
+  return revolved(point, axis, [=](double u) -> Eigen::Vector2d { return Eigen::Vector2d(r0, h0) + tube * dir(u); }, dir, n, sigma,
+                  seed);
+}
+
+SegmentSamples bore(double sigma, unsigned seed)
+{
+  return revolved(kAxisPoint, kAxis, [](double u) { return Eigen::Vector2d(4, 7 * u); },
+                  [](double) { return Eigen::Vector2d(-1, 0); }, 3000, sigma, seed);
+}
+
+Primitive cylinder(const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double radius)
+{
+  Primitive p;
+  p.type = PrimitiveType::Cylinder;
+  p.origin = point;
+  p.axis = axis;
+  p.radius = radius;
+  return p;
+}
+
+double max_distance(const Primitive& p, const SegmentSamples& s)
+{
+  double worst = 0;
+  for (Eigen::Index i = 0; i < s.points.rows(); ++i)
+    worst = std::max(worst, std::abs(project_onto_primitive(p, s.points.row(i).transpose()).signed_distance));
+  return worst;
+}
+
+double off_axis(const Eigen::Vector3d& x)
+{
+  const Eigen::Vector3d d = x - kAxisPoint;
+  return (d - d.dot(kAxis) * kAxis).norm();
+}
+
+TEST(FitProfileAboutAxis, ExactSurfacesOfRevolutionAreRecovered)
+{
+  struct Case
+  {
+    PrimitiveType type;
+    SegmentSamples samples;
+  };
+  const std::vector<Case> cases = {
+      {PrimitiveType::Cylinder, bore(0, 1)},
+      // A cone opening downwards, apex at h = 12: r = (12 - h) tan 0.2 for h in [2, 8].
+      {PrimitiveType::Cone,
+       revolved(kAxisPoint, kAxis, [](double u) { return Eigen::Vector2d((10 - 6 * u) * std::tan(0.2), 2 + 6 * u); },
+                [](double) { return Eigen::Vector2d(std::cos(0.2), std::sin(0.2)); }, 1000, 0, 2)},
+      // A band of the sphere of radius 6 centred at h = 2, from h = 2 to 5.
+      {PrimitiveType::Sphere, torus_band(kAxisPoint + 2 * kAxis, kAxis, 0, 0, 6, 0, std::asin(0.5), 1000, 0, 3)},
+      // The quarter of the torus of tube radius 1.5 round a boss's foot.
+      {PrimitiveType::Torus, torus_band(kAxisPoint, kAxis, 9.5, 1.5, 1.5, -kPi, -kPi / 2, 1000, 0, 4)},
+  };
+  for (const Case& c : cases) {
+    const std::optional<Primitive> p = fit_profile_about_axis(c.samples.points, c.samples.weights, kAxisPoint, kAxis,
+                                                              c.type);
+    ASSERT_TRUE(p) << primitive_type_name(c.type);
+    EXPECT_EQ(p->type, c.type);
+    EXPECT_LT(max_distance(*p, c.samples), 1e-9) << primitive_type_name(c.type);
+    EXPECT_LT(off_axis(p->origin), 1e-9);
+    if (c.type != PrimitiveType::Sphere) {
+      EXPECT_GT(std::abs(p->axis.dot(kAxis)), 1 - 1e-12);
+    }
+  }
+  const std::optional<Primitive> torus = fit_profile_about_axis(cases[3].samples.points, cases[3].samples.weights,
+                                                                kAxisPoint, kAxis, PrimitiveType::Torus);
+  EXPECT_NEAR(torus->radius, 9.5, 1e-9);
+  EXPECT_NEAR(torus->minor_radius, 1.5, 1e-9);
+  const std::optional<Primitive> cone = fit_profile_about_axis(cases[1].samples.points, cases[1].samples.weights,
+                                                               kAxisPoint, kAxis, PrimitiveType::Cone);
+  EXPECT_NEAR(cone->half_angle, 0.2, 1e-9);
+  EXPECT_LT((cone->origin - (kAxisPoint + 12 * kAxis)).norm(), 1e-9);
+  EXPECT_LT(cone->axis.dot(kAxis), -1 + 1e-12);  // from the apex into the opening: downwards
+}
+
+TEST(FitProfileAboutAxis, RefusesWhatDoesNotFixTheType)
+{
+  const SegmentSamples b = bore(0, 5);
+  // A cylinder's profile is a line parallel to the axis: no cone; a plane is no profile.
+  EXPECT_FALSE(fit_profile_about_axis(b.points, b.weights, kAxisPoint, kAxis, PrimitiveType::Cone));
+  EXPECT_FALSE(fit_profile_about_axis(b.points, b.weights, kAxisPoint, kAxis, PrimitiveType::Plane));
+  // Too few points, a non-unit axis, a weight per point missing, a point at infinity.
+  EXPECT_FALSE(fit_profile_about_axis(b.points.topRows(2), Eigen::VectorXd(), kAxisPoint, kAxis,
+                                      PrimitiveType::Sphere));
+  EXPECT_FALSE(fit_profile_about_axis(b.points, b.weights, kAxisPoint, 2 * kAxis, PrimitiveType::Cylinder));
+  EXPECT_FALSE(fit_profile_about_axis(b.points, b.weights.head(10), kAxisPoint, kAxis, PrimitiveType::Cylinder));
+  Eigen::MatrixX3d bad = b.points;
+  bad(7, 1) = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(fit_profile_about_axis(bad, b.weights, kAxisPoint, kAxis, PrimitiveType::Torus));
+  EXPECT_FALSE(fit_profile_about_axis(Eigen::MatrixX3d(), Eigen::VectorXd(), kAxisPoint, kAxis,
+                                      PrimitiveType::Cylinder));
+}
+
+// The bore (segment 0, its cylinder given) and a rough fillet band (segment 1) with its own fit as a sphere, the
+// way a free fit types a narrow band on a rough scan.
+struct Boss
+{
+  std::vector<SegmentSamples> samples;
+  std::vector<std::optional<Primitive>> primitives;
+};
+
+Boss boss(const Eigen::Vector3d& fillet_point, const Eigen::Vector3d& fillet_axis, double sigma)
+{
+  Boss b;
+  b.samples = {bore(sigma, 11), torus_band(fillet_point, fillet_axis, 9.5, 1.5, 1.5, -kPi, -kPi / 2, 3000, sigma, 12)};
+  b.primitives = {cylinder(kAxisPoint, kAxis, 4), std::nullopt};
+  const SegmentSamples& f = b.samples[1];
+  FitResult sphere = fit_primitive(PrimitiveType::Sphere, f.points, f.normals, f.weights);
+  EXPECT_TRUE(sphere.status.ok());
+  b.primitives[1] = sphere.primitive;
+  return b;
+}
+
+TEST(FitProfilesAboutAxes, AFilletBandAboutTheBoreIsItsTorus)
+{
+  const Boss b = boss(kAxisPoint, kAxis, 0.1);
+  const std::vector<SegmentProfile> profiles =
+      fit_profiles_about_axes(b.primitives, b.samples, 0.1, 0, 10, 0.3);
+  ASSERT_EQ(profiles.size(), 1u);
+  const SegmentProfile& q = profiles[0];
+  EXPECT_EQ(q.segment, 1);
+  EXPECT_EQ(q.axis_segment, 0);
+  ASSERT_EQ(q.primitive.type, PrimitiveType::Torus);
+  EXPECT_NEAR(q.primitive.radius, 9.5, 0.1);
+  EXPECT_NEAR(q.primitive.minor_radius, 1.5, 0.1);
+  EXPECT_GT(std::abs(q.primitive.axis.dot(kAxis)), 1 - 1e-12);
+  EXPECT_LT(off_axis(q.primitive.origin), 1e-9);
+  EXPECT_LT(q.rms, 0.12);
+}
+
+TEST(FitProfilesAboutAxes, ABandOffTheAxisOrTiltedStaysAsFitted)
+{
+  // 2 mm beside the bore's axis, with the relations' distance 0.3 (3 x the noise).
+  const Eigen::Vector3d beside = kAxisPoint + 2 * kAxis.unitOrthogonal();
+  const Boss b = boss(beside, kAxis, 0.1);
+  EXPECT_TRUE(fit_profiles_about_axes(b.primitives, b.samples, 0.1, 0, 10, 0.3).empty());
+  // Tilted 20 degrees from it, beyond the relations' 10.
+  const Eigen::Vector3d tilted =
+      Eigen::AngleAxisd(radians_from_degrees(20), kAxis.unitOrthogonal()) * kAxis;
+  const Boss t = boss(kAxisPoint, tilted, 0.1);
+  EXPECT_TRUE(fit_profiles_about_axes(t.primitives, t.samples, 0.1, 0, 10, 0.3).empty());
+  // On the axis, but the distance asked is below the own sphere's offset from it.
+  const Boss on = boss(kAxisPoint, kAxis, 0.1);
+  const double offset = off_axis(on.primitives[1]->origin);
+  EXPECT_GT(offset, 1e-3);
+  EXPECT_TRUE(fit_profiles_about_axes(on.primitives, on.samples, 0.1, 0, 10, 0.5 * offset).empty());
+  EXPECT_EQ(fit_profiles_about_axes(on.primitives, on.samples, 0.1, 0, 10, 2 * offset).size(), 1u);
+}
+
+TEST(FitProfilesAboutAxes, TheTypeAskedIsKeptAndAnExactTorusStaysExact)
+{
+  const Boss rough = boss(kAxisPoint, kAxis, 0.1);
+  // Asked to be a sphere, the band can only become the sphere about the axis.
+  for (const SegmentProfile& q : fit_profiles_about_axes(rough.primitives, rough.samples, 0.1, 0, 10, 0.3,
+                                                         {std::nullopt, PrimitiveType::Sphere}))
+    EXPECT_EQ(q.primitive.type, PrimitiveType::Sphere);
+  // Asked to be a plane (or given no primitive): nothing to do.
+  EXPECT_TRUE(fit_profiles_about_axes(rough.primitives, rough.samples, 0.1, 0, 10, 0.3,
+                                      {std::nullopt, PrimitiveType::Plane})
+                  .empty());
+  Boss exact = boss(kAxisPoint, kAxis, 0);
+  Primitive torus;
+  torus.type = PrimitiveType::Torus;
+  torus.origin = kAxisPoint + 1.5 * kAxis;
+  torus.axis = kAxis;
+  torus.radius = 9.5;
+  torus.minor_radius = 1.5;
+  exact.primitives[1] = torus;
+  for (const SegmentProfile& q : fit_profiles_about_axes(exact.primitives, exact.samples, 0, 0, 10, 0.3))
+    EXPECT_LT(max_distance(q.primitive, exact.samples[1]), 1e-9);
+}
+
+TEST(FitProfilesAboutAxes, BrokenInputGivesNothing)
+{
+  Boss b = boss(kAxisPoint, kAxis, 0.1);
+  b.samples[1].points(5, 2) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(fit_profiles_about_axes(b.primitives, b.samples, 0.1, 0, 10, 0.3).empty());
+  const Boss good = boss(kAxisPoint, kAxis, 0.1);
+  EXPECT_TRUE(fit_profiles_about_axes(good.primitives, good.samples, 0.1, 0, 10, 0).empty());    // no distance
+  EXPECT_TRUE(fit_profiles_about_axes(good.primitives, good.samples, 0.1, 0, 90, 0.3).empty());  // angle out of range
+  EXPECT_TRUE(fit_profiles_about_axes(good.primitives, {}, 0.1, 0, 10, 0.3).empty());
+  Boss no_bore = boss(kAxisPoint, kAxis, 0.1);
+  no_bore.primitives[0] = std::nullopt;
+  EXPECT_TRUE(fit_profiles_about_axes(no_bore.primitives, no_bore.samples, 0.1, 0, 10, 0.3).empty());
+}
+
+} // namespace
