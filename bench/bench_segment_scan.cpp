@@ -350,6 +350,9 @@ int main(int argc, char** argv)
                 result.relation_seconds);
     for (const Relation& r : result.relations)
       std::printf(" %s(%d,%d)", relation_kind_name(r.kind), r.a, r.b);
+    std::printf("\nprofiles about a cylinder's axis: %zu:", result.profiles.size());
+    for (const SegmentProfile& q : result.profiles)
+      std::printf(" %d %s about %d", q.segment, primitive_type_name(q.primitive.type), q.axis_segment);
     std::printf("\nblends between planes: %zu:", result.blends.size());
     for (const SegmentEdgeBlend& b : result.blends)
       std::printf(" %s %d of (%d,%d) setback %.3f", b.form == BlendForm::Fillet ? "fillet" : "chamfer", b.segment,

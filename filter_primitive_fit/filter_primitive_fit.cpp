@@ -136,7 +136,9 @@ void PrimitiveFitFilters::parameters(int id, MeshDocument&, ParameterList& parls
                              "and 45 degree faces, coaxial and concentric features, coplanar faces, equal radii, "
                              "fillets tangent to the faces they round) and refit all primitives together under "
                              "them. A relation is kept only if it raises no segment's fit error by more than "
-                             "Relation Cost; tilted or free features stay as fitted. Then a segment lying between "
+                             "Relation Cost; tilted or free features stay as fitted. Then a sphere, cone or torus "
+                             "turning about a cylinder's axis (a boss's fillet about its bore) is refitted about "
+                             "that axis as the type its profile is, and a segment lying between "
                              "two planes, along their edge, becomes the fillet (cylinder) or chamfer (plane) "
                              "tangent to both, where its borders with them lie, when that explains it as well as "
                              "its own fit.");
@@ -346,6 +348,12 @@ void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegments
       r.relations_dropped, 1000 * r.relation_seconds);
   for (std::size_t i = 0; i < r.relations.size() && i < 100; ++i)
     run.logf("  relation: %s", describe_relation(r.relations[i], r.primitives).c_str());
+  if (!r.profiles.empty())
+    run.logf("%s: %d segments turning about a cylinder segment's axis fitted about it:", qUtf8Printable(name),
+        int(r.profiles.size()));
+  for (std::size_t i = 0; i < r.profiles.size() && i < 100; ++i)
+    run.logf("  segment %d, about the axis of segment %d: %s", r.profiles[i].segment, r.profiles[i].axis_segment,
+        describe_primitive(r.profiles[i].primitive).c_str());
   if (r.blends.empty())
     return;
   run.logf("%s: %d segments between two planes fitted as the fillet or chamfer tangent to both:", qUtf8Printable(name),

@@ -1,5 +1,7 @@
 #include "common/pipeline/fit_all_segments.h"
 
+#include <algorithm>
+
 namespace primitive_edit {
 namespace fit_all_detail {
 
@@ -41,6 +43,27 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
     const std::optional<Primitive>& p = related.primitives[std::size_t(s)];
     if (p && out.fits[std::size_t(s)].status.ok())
       take_primitive(out, samples, s, *p);
+  }
+  // Spheres, cones and tori turning about a hole's or boss's axis, as the relations hold it: their profile about
+  // it. Their relations were those of their former type; now they share that axis.
+  for (const SegmentProfile& q :
+       fit_profiles_about_axes(out.primitives, samples, out.roughness, options.tolerance,
+                               options.relation_options.angle_deg, related.distance, options.types)) {
+    if (!take_primitive(out, samples, q.segment, q.primitive))
+      continue;
+    out.profiles.push_back(q);
+    out.relations.erase(std::remove_if(out.relations.begin(), out.relations.end(),
+                                       [&](const Relation& r) { return r.a == q.segment || r.b == q.segment; }),
+                        out.relations.end());
+    Relation r;
+    r.kind = q.primitive.type == PrimitiveType::Sphere ? RelationKind::Concentric : RelationKind::Coaxial;
+    r.a = q.axis_segment;
+    r.b = q.segment;
+    r.sign = q.primitive.type != PrimitiveType::Sphere &&
+                     out.primitives[std::size_t(q.axis_segment)]->axis.dot(q.primitive.axis) < 0
+                 ? -1.0
+                 : 1.0;
+    out.relations.push_back(r);
   }
   // Fillets and chamfers, given the planes they join as the relations hold them.
   for (const SegmentEdgeBlend& b :

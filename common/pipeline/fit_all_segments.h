@@ -8,8 +8,8 @@
 // Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
 //         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
 //         where free-form); with relations on, the relations kept (then the tangencies of the fillets found
-//         between planes), how many the check dropped, and the segments given a fillet or chamfer between two
-//         planes; the estimated roughness, counts per type, the fitted share of the area, the SnapReport and
+//         between planes), how many the check dropped, the segments refitted about a cylinder segment's axis
+//         and those given a fillet or chamfer between two planes; the estimated roughness, counts per type, the fitted share of the area, the SnapReport and
 //         the time of each stage. With snap, the mesh's vertices lie on the primitives, the primitives are
 //         recorded on the mesh (segment_primitive_attribute.h) so that a later Snap Segment keeps sharp edges
 //         against them, and normals and bounding box are updated.
@@ -17,7 +17,8 @@
 //         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
 //         relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
-//         segment_contacts for the tangencies), fit_edge_blends (with the same contacts), snap_segments.
+//         segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends (with the same
+//         contacts), snap_segments.
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -32,6 +33,7 @@
 #include "common/mesh/segment_contacts.h"
 #include "common/pipeline/fit_segments.h"
 #include "common/relate/fit_edge_blends.h"
+#include "common/relate/fit_profiles_about_axes.h"
 #include "common/relate/relate_primitives.h"
 #include "common/snap/snap_segments.h"
 
@@ -67,6 +69,7 @@ struct FitAllSegmentsResult
   double fitted_area = 0, total_area = 0;
   std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids, then the fillets' tangencies
   int relations_dropped = 0;        // found, then dropped by the check after the refit
+  std::vector<SegmentProfile> profiles;   // segments given their profile about a cylinder segment's axis
   std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   std::optional<SnapReport> snap;
   double fit_seconds = 0, relation_seconds = 0, snap_seconds = 0;  // roughness, samples and fits; relations; snapping
@@ -80,8 +83,9 @@ namespace fit_all_detail {
 // it), and keeps the counts; false, with nothing changed, when p cannot be measured on the samples.
 bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples, int s, const Primitive& p);
 
-// The relations and the joint refit (relate_primitives), then the fillets and chamfers between planes
-// (fit_edge_blends, their tangencies added to the relations). A failed status when relate_primitives refuses.
+// The relations and the joint refit (relate_primitives), then the profiles about the cylinders' axes
+// (fit_profiles_about_axes, each replacing its segment's relations by its coaxiality) and the fillets and
+// chamfers between planes (fit_edge_blends, their tangencies added to the relations). A failed status when relate_primitives refuses.
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
                         const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options);
 
