@@ -346,11 +346,32 @@ void run(Decoder& in)
       }
       FUZZ_CHECK(fitted == r.fitted && r.fitted_area <= r.total_area && std::isfinite(r.total_area));
       FUZZ_CHECK(std::accumulate(std::begin(r.per_type), std::end(r.per_type), 0) == r.fitted);
+      // A blend's relations are its tangencies, a profile's its one relation to its axis.
+      auto relations_of = [&](int s) {
+        std::vector<Relation> of;
+        for (const Relation& rel : r.relations)
+          if (rel.a == s || rel.b == s)
+            of.push_back(rel);
+        return of;
+      };
       for (const SegmentEdgeBlend& b : r.blends) {
         const std::optional<Primitive>& p = r.primitives[size_t(b.segment)];
         FUZZ_CHECK(p && p->type == b.primitive.type && primitive_is_valid(*p));
         if (size_t(b.segment) < options.types.size() && options.types[size_t(b.segment)])
           FUZZ_CHECK(*options.types[size_t(b.segment)] == p->type);
+        for (const Relation& rel : relations_of(b.segment))
+          FUZZ_CHECK(rel.kind == RelationKind::Tangent && rel.a == b.segment && b.form == BlendForm::Fillet);
+      }
+      for (const SegmentProfile& q : r.profiles) {
+        const std::optional<Primitive>& p = r.primitives[size_t(q.segment)];
+        FUZZ_CHECK(p && p->type == q.primitive.type && primitive_is_valid(*p));
+        const std::vector<Relation> of = relations_of(q.segment);
+        const bool axis_blended = std::any_of(r.blends.begin(), r.blends.end(), [&](const SegmentEdgeBlend& b) {
+          return b.segment == q.axis_segment;
+        });  // then the axis is a fillet's, and the coaxiality was dropped with its relations
+        FUZZ_CHECK(of.size() == (axis_blended ? 0u : 1u));
+        for (const Relation& rel : of)
+          FUZZ_CHECK(rel.a == q.axis_segment && rel.b == q.segment);
       }
       std::ostringstream json;
       write_fits_json(json, r, "fuzz \"mesh\"\n", false);

@@ -30,6 +30,18 @@ bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>
   return true;
 }
 
+namespace {
+
+// Forgets segment s's relations when, after the joint refit, it is given a primitive they were not found for.
+void drop_relations_of(FitAllSegmentsResult& out, int s)
+{
+  out.relations.erase(std::remove_if(out.relations.begin(), out.relations.end(),
+                                     [s](const Relation& r) { return r.a == s || r.b == s; }),
+                      out.relations.end());
+}
+
+} // namespace
+
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
                         const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options)
 {
@@ -52,9 +64,7 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
     if (!take_primitive(out, samples, q.segment, q.primitive))
       continue;
     out.profiles.push_back(q);
-    out.relations.erase(std::remove_if(out.relations.begin(), out.relations.end(),
-                                       [&](const Relation& r) { return r.a == q.segment || r.b == q.segment; }),
-                        out.relations.end());
+    drop_relations_of(out, q.segment);
     Relation r;
     r.kind = q.primitive.type == PrimitiveType::Sphere ? RelationKind::Concentric : RelationKind::Coaxial;
     r.a = q.axis_segment;
@@ -65,12 +75,17 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
                  : 1.0;
     out.relations.push_back(r);
   }
-  // Fillets and chamfers, given the planes they join as the relations hold them.
+  // Fillets and chamfers, given the planes they join as the relations hold them; a fillet's relations are its
+  // tangencies.
   for (const SegmentEdgeBlend& b :
        fit_edge_blends(out.primitives, samples, contacts, out.roughness, options.tolerance, options.types)) {
     if (!take_primitive(out, samples, b.segment, b.primitive))
       continue;
     out.blends.push_back(b);
+    drop_relations_of(out, b.segment);
+    out.profiles.erase(std::remove_if(out.profiles.begin(), out.profiles.end(),
+                                      [&](const SegmentProfile& q) { return q.segment == b.segment; }),
+                       out.profiles.end());
     if (b.form != BlendForm::Fillet)
       continue;
     for (int plane : {b.plane_a, b.plane_b}) {

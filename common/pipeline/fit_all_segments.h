@@ -7,10 +7,11 @@
 //         whether to snap and how (SnapOptions), the threads (fit_segments.h), and a Progress.
 // Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
 //         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
-//         where free-form); with relations on, the relations kept (then the tangencies of the fillets found
-//         between planes), how many the check dropped, the segments refitted about a cylinder segment's axis
-//         and those given a fillet or chamfer between two planes; the estimated roughness, counts per type, the fitted share of the area, the SnapReport and
-//         the time of each stage. With snap, the mesh's vertices lie on the primitives, the primitives are
+//         where free-form); with relations on, the relations kept (a segment refitted about a cylinder's axis
+//         then has its coaxiality instead, a fillet found between planes its tangencies), how many the check
+//         dropped, the segments refitted about a cylinder segment's axis and those given a fillet or chamfer
+//         between two planes; the estimated roughness, counts per type, the fitted share of the area, the
+//         SnapReport and the time of each stage. With snap, the mesh's vertices lie on the primitives, the primitives are
 //         recorded on the mesh (segment_primitive_attribute.h) so that a later Snap Segment keeps sharp edges
 //         against them, and normals and bounding box are updated.
 //         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
@@ -67,7 +68,7 @@ struct FitAllSegmentsResult
   int fitted = 0;
   int per_type[kPrimitiveTypeCount] = {0, 0, 0, 0, 0};
   double fitted_area = 0, total_area = 0;
-  std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids, then the fillets' tangencies
+  std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids; see Output
   int relations_dropped = 0;        // found, then dropped by the check after the refit
   std::vector<SegmentProfile> profiles;   // segments given their profile about a cylinder segment's axis
   std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
@@ -85,7 +86,8 @@ bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>
 
 // The relations and the joint refit (relate_primitives), then the profiles about the cylinders' axes
 // (fit_profiles_about_axes, each replacing its segment's relations by its coaxiality) and the fillets and
-// chamfers between planes (fit_edge_blends, their tangencies added to the relations). A failed status when relate_primitives refuses.
+// chamfers between planes (fit_edge_blends; a fillet's relations are its tangencies, a chamfer has none). A failed
+// status when relate_primitives refuses.
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
                         const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options);
 

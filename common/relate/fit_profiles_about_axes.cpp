@@ -74,10 +74,8 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
     const bool typed = std::size_t(s) < types.size() && types[std::size_t(s)].has_value();
     const PrimitiveType asked = typed ? *types[std::size_t(s)] : mine ? mine->type : PrimitiveType::Plane;
     const SegmentSamples& own = samples[std::size_t(s)];
-    if (!mine || !is_revolution(mine->type) || !primitive_is_valid(*mine) ||
-        !is_revolution(asked) ||
-        own.weights.size() != own.points.rows() ||
-        !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
+    if (!mine || !is_revolution(mine->type) || !primitive_is_valid(*mine) || !is_revolution(asked) ||
+        own.weights.size() != own.points.rows() || !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
       continue;
     const FitSample sample = fit_subsample(own.points, Eigen::MatrixX3d(), own.weights, kProfilePoints);
     const double diagonal = (sample.points.colwise().maxCoeff() - sample.points.colwise().minCoeff()).norm();
@@ -98,8 +96,7 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
       const Primitive& c = *primitives[std::size_t(a)];
       if (a == s || !turns_about(*mine, c, centroid, cos_angle, distance))
         continue;
-      for (PrimitiveType type :
-           {PrimitiveType::Cone, PrimitiveType::Sphere, PrimitiveType::Torus}) {
+      for (PrimitiveType type : {PrimitiveType::Cone, PrimitiveType::Sphere, PrimitiveType::Torus}) {
         if (typed && asked != type)
           continue;
         const std::optional<Primitive> q = profile_about(sample, c, type, cap);
