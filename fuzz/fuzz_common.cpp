@@ -247,6 +247,13 @@ void run(Decoder& in)
   // Fits on the segments' samples.
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, seg, K);
   FUZZ_CHECK(samples.size() == size_t(K));
+  {
+    const std::vector<SegmentSamples> on_two = gather_segment_samples(m, seg, K, 2); // same on any thread count
+    for (int s = 0; s < K; ++s) {
+      const SegmentSamples &a = samples[size_t(s)], &b = on_two[size_t(s)];
+      FUZZ_CHECK(a.vertex == b.vertex && a.points == b.points && a.normals == b.normals && a.weights == b.weights);
+    }
+  }
   std::vector<std::optional<Primitive>> prim_of_segment(static_cast<size_t>(K));
   for (int s = 0; s < K; ++s) {
     const SegmentSamples& ss = samples[size_t(s)];

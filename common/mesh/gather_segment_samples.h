@@ -1,25 +1,33 @@
 // gather_segment_samples.h: the points a primitive is fitted to, per segment.
 //
-// Input:  a vcg triangle mesh, `segment_of_face` (index = vcg::tri::Index(m, face), -1 = none) and the
-//         segment count K.
+// Input:  a vcg triangle mesh, `segment_of_face` (index = vcg::tri::Index(m, face), -1 = none), the
+//         segment count K and the threads to use (<= 0: every hardware thread).
 // Output: for each segment k, the vertices of its faces, each once, with
 //         - normals: the area-weighted mean of the normals of the segment's own faces around the vertex
 //           (faces of other segments are left out, so a vertex on an edge gets the normal of this side),
 //         - weights: a third of the area of those faces (the vertex's share of the segment's surface),
 //         - vertex:  the mesh index of each vertex, and `area`, the segment's area.
 //         Degenerate faces add nothing to normals and weights; vertices with non-finite coordinates are
-//         skipped.
-// Cost:   O(F + V + K) time, O(F + V) extra memory.
+//         skipped. The same on any thread count.
+// Method: the live faces grouped by segment (a counting sort), then each segment's faces walked on their
+//         own. The walk waits on memory (a vcg face is about 100 bytes, read out of order; at 1M faces it
+//         was half of Fit All's fitting phase), so the segments are shared out among the threads, largest
+//         first, each thread with its own vertex -> row table.
+// Cost:   O(F + V + K) time, the walks divided among the threads; O(F + V x threads) extra memory.
 #ifndef PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 #define PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 
 #include "common/base/huge_page_vector.h"
+#include "common/base/parallel_for.h"
 
 #include <vcg/complex/complex.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <atomic>
+#include <numeric>
 #include <vector>
 
 namespace primitive_edit {
@@ -33,94 +41,134 @@ struct SegmentSamples
   double area = 0.0;
 };
 
-template <class MeshType>
-std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std::vector<int>& segment_of_face,
-                                                   int segment_count)
+namespace gather_detail {
+
+// The live faces of each segment: segment s has faces[start[s] .. start[s + 1]), in mesh order.
+struct FacesBySegment
 {
-  std::vector<SegmentSamples> out(size_t(std::max(segment_count, 0)));
-  const size_t face_count = m.face.size();
-  if (segment_count <= 0 || segment_of_face.size() != face_count)
-    return out;
+  std::vector<int> start, faces;
+};
 
-  // Faces grouped by segment by a counting sort, so each segment is one contiguous run.
-  std::vector<int> start(size_t(segment_count) + 1, 0);
-  for (size_t f = 0; f < face_count; ++f) {
+template <class MeshType>
+FacesBySegment group_faces_by_segment(const MeshType& m, const std::vector<int>& segment_of_face, int segment_count)
+{
+  const std::size_t face_count = m.face.size();
+  FacesBySegment out;
+  out.start.assign(std::size_t(segment_count) + 1, 0);
+  // The segment of each live face, -1 for the rest: the faces themselves are read once.
+  std::vector<int> segment = huge_page_vector<int>(face_count);
+  for (std::size_t f = 0; f < face_count; ++f) {
     const int s = segment_of_face[f];
-    if (s >= 0 && s < segment_count && !m.face[f].IsD())
-      ++start[size_t(s) + 1];
+    segment[f] = (s >= 0 && s < segment_count && !m.face[f].IsD()) ? s : -1;
+    if (segment[f] >= 0)
+      ++out.start[std::size_t(s) + 1];
   }
-  for (int s = 0; s < segment_count; ++s)
-    start[size_t(s) + 1] += start[size_t(s)];
-  std::vector<int> faces(size_t(start.back()));
-  {
-    std::vector<int> next(start.begin(), start.end() - 1);
-    for (size_t f = 0; f < face_count; ++f) {
-      const int s = segment_of_face[f];
-      if (s >= 0 && s < segment_count && !m.face[f].IsD())
-        faces[size_t(next[size_t(s)]++)] = int(f);
-    }
-  }
+  std::partial_sum(out.start.begin(), out.start.end(), out.start.begin());
+  out.faces.resize(std::size_t(out.start.back()));
+  std::vector<int> next(out.start.begin(), out.start.end() - 1);
+  for (std::size_t f = 0; f < face_count; ++f)
+    if (segment[f] >= 0)
+      out.faces[std::size_t(next[std::size_t(segment[f])]++)] = int(f);
+  return out;
+}
 
-  auto finite = [](const Eigen::Vector3d& p) { return p.allFinite(); };
-  auto position = [&](const typename MeshType::VertexType* v) {
+// One thread's tables: local[v] is the row of vertex v in the segment being gathered, stamp[v] the segment
+// that set it (so the tables are never cleared).
+struct GatherScratch
+{
+  std::vector<int> local, stamp;
+  std::vector<Eigen::Vector3d> normal_sum = {};
+  std::vector<double> weight_sum = {};
+  std::vector<int> rows = {};
+};
+
+// The samples of segment s, whose faces are [first, last).
+template <class MeshType>
+SegmentSamples gather_one_segment(const MeshType& m, const int* first, const int* last, int s, GatherScratch& t)
+{
+  auto position = [](const typename MeshType::VertexType* v) {
     return Eigen::Vector3d(double(v->cP()[0]), double(v->cP()[1]), double(v->cP()[2]));
   };
-
-  // local[v] is the row of vertex v in the current segment; stamp[v] says which segment set it.
-  std::vector<int> local = huge_page_vector(m.vert.size(), -1), stamp = huge_page_vector(m.vert.size(), -1);
-  std::vector<Eigen::Vector3d> normal_sum;
-  std::vector<double> weight_sum;
-  std::vector<int> rows;
-  for (int s = 0; s < segment_count; ++s) {
-    normal_sum.clear();
-    weight_sum.clear();
-    rows.clear();
-    double area = 0.0;
-    for (int i = start[size_t(s)]; i < start[size_t(s) + 1]; ++i) {
-      const auto& f = m.face[size_t(faces[size_t(i)])];
-      Eigen::Vector3d p[3];
-      int vi[3];
-      bool ok = true;
-      for (int k = 0; k < 3; ++k) {
-        vi[k] = int(vcg::tri::Index(m, f.cV(k)));
-        p[k] = position(f.cV(k));
-        ok = ok && finite(p[k]);
-      }
-      const Eigen::Vector3d cross = ok ? Eigen::Vector3d((p[1] - p[0]).cross(p[2] - p[0])) : Eigen::Vector3d::Zero();
-      const double face_area = 0.5 * cross.norm();
-      area += face_area;
-      for (int k = 0; k < 3; ++k) {
-        if (!finite(p[k]))
-          continue;
-        if (stamp[size_t(vi[k])] != s) {
-          stamp[size_t(vi[k])] = s;
-          local[size_t(vi[k])] = int(rows.size());
-          rows.push_back(vi[k]);
-          normal_sum.push_back(Eigen::Vector3d::Zero());
-          weight_sum.push_back(0.0);
-        }
-        const int r = local[size_t(vi[k])];
-        normal_sum[size_t(r)] += cross; // |cross| = 2 * area: area-weighted
-        weight_sum[size_t(r)] += face_area / 3.0;
-      }
+  t.normal_sum.clear();
+  t.weight_sum.clear();
+  t.rows.clear();
+  double area = 0.0;
+  for (const int* fi = first; fi != last; ++fi) {
+    const auto& f = m.face[std::size_t(*fi)];
+    Eigen::Vector3d p[3];
+    int vi[3];
+    bool ok = true;
+    for (int k = 0; k < 3; ++k) {
+      vi[k] = int(vcg::tri::Index(m, f.cV(k)));
+      p[k] = position(f.cV(k));
+      ok = ok && p[k].allFinite();
     }
-    SegmentSamples& samples = out[size_t(s)];
-    const Eigen::Index n = Eigen::Index(rows.size());
-    samples.points.resize(n, 3);
-    samples.normals.resize(n, 3);
-    samples.weights.resize(n);
-    advise_huge_pages(samples.points.data(), std::size_t(n) * 3 * sizeof(double));
-    advise_huge_pages(samples.normals.data(), std::size_t(n) * 3 * sizeof(double));
-    samples.vertex = rows;
-    samples.area = area;
-    for (Eigen::Index r = 0; r < n; ++r) {
-      samples.points.row(r) = position(&m.vert[size_t(rows[size_t(r)])]).transpose();
-      const double len = normal_sum[size_t(r)].norm();
-      samples.normals.row(r) = len > 0 ? Eigen::RowVector3d(normal_sum[size_t(r)].transpose() / len)
-                                       : Eigen::RowVector3d::Zero();
-      samples.weights[r] = weight_sum[size_t(r)];
+    const Eigen::Vector3d cross = ok ? Eigen::Vector3d((p[1] - p[0]).cross(p[2] - p[0])) : Eigen::Vector3d::Zero();
+    const double face_area = 0.5 * cross.norm();
+    area += face_area;
+    for (int k = 0; k < 3; ++k) {
+      if (!p[k].allFinite())
+        continue;
+      const std::size_t v = std::size_t(vi[k]);
+      if (t.stamp[v] != s) {
+        t.stamp[v] = s;
+        t.local[v] = int(t.rows.size());
+        t.rows.push_back(vi[k]);
+        t.normal_sum.push_back(Eigen::Vector3d::Zero());
+        t.weight_sum.push_back(0.0);
+      }
+      t.normal_sum[std::size_t(t.local[v])] += cross; // |cross| = 2 * area: area-weighted
+      t.weight_sum[std::size_t(t.local[v])] += face_area / 3.0;
     }
   }
+  SegmentSamples samples;
+  const Eigen::Index n = Eigen::Index(t.rows.size());
+  samples.points.resize(n, 3);
+  samples.normals.resize(n, 3);
+  samples.weights.resize(n);
+  advise_huge_pages(samples.points.data(), std::size_t(n) * 3 * sizeof(double));
+  advise_huge_pages(samples.normals.data(), std::size_t(n) * 3 * sizeof(double));
+  samples.vertex = t.rows;
+  samples.area = area;
+  for (Eigen::Index r = 0; r < n; ++r) {
+    samples.points.row(r) = position(&m.vert[std::size_t(t.rows[std::size_t(r)])]).transpose();
+    const double len = t.normal_sum[std::size_t(r)].norm();
+    samples.normals.row(r) = len > 0 ? Eigen::RowVector3d(t.normal_sum[std::size_t(r)].transpose() / len)
+                                     : Eigen::RowVector3d::Zero();
+    samples.weights[r] = t.weight_sum[std::size_t(r)];
+  }
+  return samples;
+}
+
+} // namespace gather_detail
+
+template <class MeshType>
+std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std::vector<int>& segment_of_face,
+                                                   int segment_count, int threads = 1)
+{
+  std::vector<SegmentSamples> out(size_t(std::max(segment_count, 0)));
+  if (segment_count <= 0 || segment_of_face.size() != m.face.size())
+    return out;
+  const gather_detail::FacesBySegment grouped =
+      gather_detail::group_faces_by_segment(m, segment_of_face, segment_count);
+  auto face_count = [&](int s) { return grouped.start[std::size_t(s) + 1] - grouped.start[std::size_t(s)]; };
+  std::vector<int> order(out.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return face_count(a) > face_count(b); });
+  // One worker per thread, each taking the next segment in that order.
+  const std::size_t workers = std::size_t(std::min(resolve_thread_count(threads), segment_count));
+  std::atomic<int> next{0};
+  parallel_for(workers, int(workers), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t w = begin; w < end; ++w) {
+      gather_detail::GatherScratch scratch{huge_page_vector(m.vert.size(), -1), huge_page_vector(m.vert.size(), -1)};
+      for (int i = next++; i < segment_count; i = next++) {
+        const int s = order[std::size_t(i)];
+        const int* faces = grouped.faces.data();
+        out[std::size_t(s)] = gather_detail::gather_one_segment(m, faces + grouped.start[std::size_t(s)],
+                                                                faces + grouped.start[std::size_t(s) + 1], s, scratch);
+      }
+    }
+  });
   return out;
 }
 

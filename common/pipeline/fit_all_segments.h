@@ -117,7 +117,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
     out.roughness = surface_roughness(m);
   if (options.tolerance == 0)
     fit_options.roughness = out.roughness;
-  const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count);
+  const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count, options.threads);
   out.fits = fit_segments(samples, options.types, fit_options, options.threads,
                           progress_range(progress, 0, options.snap ? 80 : 100));
   out.primitives.resize(size_t(count));

@@ -93,6 +93,37 @@ int segmented_plate(M& m, std::vector<int>& segment_of_face)
   return segment_by_normal_angle(m, params, segment_of_face);
 }
 
+// Fit All's samples are gathered segment by segment on every thread: the same samples on 1 and 3 threads, each
+// live face's area counted once, and a face of no segment (or a dead one) in none.
+TYPED_TEST(SegmentFitSnapTest, SegmentSamplesAreTheSameOnAnyThreadCount)
+{
+  using M = TypeParam;
+  M m;
+  std::vector<int> segment_of_face;
+  const int count = segmented_plate(m, segment_of_face);
+  ASSERT_GE(count, 3);
+  segment_of_face[0] = -1;
+  vcg::tri::Allocator<M>::DeleteFace(m, m.face[1]);
+  double live_area = 0;
+  for (std::size_t f = 2; f < m.face.size(); ++f)
+    if (segment_of_face[f] >= 0)
+      live_area += 0.5 * double(vcg::DoubleArea(m.face[f]));
+  const std::vector<SegmentSamples> one = gather_segment_samples(m, segment_of_face, count, 1);
+  const std::vector<SegmentSamples> three = gather_segment_samples(m, segment_of_face, count, 3);
+  ASSERT_EQ(one.size(), std::size_t(count));
+  ASSERT_EQ(three.size(), std::size_t(count));
+  double area = 0;
+  for (int s = 0; s < count; ++s) {
+    const SegmentSamples &a = one[std::size_t(s)], &b = three[std::size_t(s)];
+    EXPECT_EQ(a.vertex, b.vertex);
+    EXPECT_TRUE(a.points == b.points && a.normals == b.normals && a.weights == b.weights);
+    EXPECT_EQ(a.area, b.area);
+    EXPECT_NEAR(a.weights.sum(), a.area, 1e-9 * a.area);
+    area += a.area;
+  }
+  EXPECT_NEAR(area, live_area, 1e-6 * live_area);
+}
+
 TYPED_TEST(SegmentFitSnapTest, FitAllWithoutSnapLeavesTheMeshAndExportsEverySegment)
 {
   TypeParam m;
