@@ -1,14 +1,12 @@
 #include "common/relate/fit_edge_blends.h"
 
 #include "common/fit/capped_rms.h"
-#include "common/fit/check_fit_input.h"
 #include "common/fit/fit_primitive_auto.h"
-#include "common/fit/fit_subsample.h"
+#include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace primitive_edit {
 
@@ -56,22 +54,11 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
 
 // The best-scoring blend of segment s between any two of the planes it touches, better than its own primitive.
 std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::optional<Primitive>>& primitives,
-                                              const FitSample& own,
-                                              const std::vector<const SegmentContact*>& touching, double roughness,
-                                              double tolerance, const std::optional<PrimitiveType>& type)
+                                              const OwnFitScore& own,
+                                              const std::vector<const SegmentContact*>& touching,
+                                              const std::optional<PrimitiveType>& type)
 {
-  const double diagonal = (own.points.colwise().maxCoeff() - own.points.colwise().minCoeff()).norm();
-  const double cap = tolerance > 0 ? tolerance : automatic_fit_tolerance(diagonal, roughness);
-  if (!(cap > 0) || !std::isfinite(cap))
-    return std::nullopt;
-  const std::optional<Primitive>& mine = primitives[std::size_t(s)];
-  double best_score = std::numeric_limits<double>::infinity(), own_rms = cap;
-  if (mine) {
-    own_rms = capped_rms(own, cap, [&](const Eigen::Vector3d& p) {
-      return std::abs(project_onto_primitive(*mine, p).signed_distance);
-    });
-    best_score = type_score(own_rms, primitive_degrees_of_freedom(mine->type), diagonal);
-  }
+  double best_score = own.score;
   std::optional<SegmentEdgeBlend> chosen;
   for (std::size_t i = 0; i < touching.size(); ++i)
     for (std::size_t j = i + 1; j < touching.size(); ++j) {
@@ -79,10 +66,10 @@ std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::opti
       const int b = touching[j]->a == s ? touching[j]->b : touching[j]->a;
       const std::optional<SegmentEdgeBlend> blend = blend_between(s, a, b, *primitives[std::size_t(a)],
                                                                   *primitives[std::size_t(b)], *touching[i],
-                                                                  *touching[j], own, cap, type);
-      if (!blend || !(blend->rms <= std::min(cap, kEdgeBlendRmsRatio * own_rms)))
+                                                                  *touching[j], own.sample, own.cap, type);
+      if (!blend || !(blend->rms <= std::min(own.cap, kEdgeBlendRmsRatio * own.rms)))
         continue;
-      const double score = type_score(blend->rms, 1, diagonal);
+      const double score = type_score(blend->rms, 1, own.diagonal);
       if (score < best_score) {
         best_score = score;
         chosen = blend;
@@ -114,13 +101,14 @@ std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Pr
   }
   std::vector<SegmentEdgeBlend> candidates;
   for (int s = 0; s < count; ++s) {
-    const SegmentSamples& own = samples[std::size_t(s)];
-    if (planes_of[std::size_t(s)].size() < 2 || own.weights.size() != own.points.rows() ||
-        !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
+    if (planes_of[std::size_t(s)].size() < 2)
+      continue;
+    const std::optional<OwnFitScore> own =
+        score_own_fit(samples[std::size_t(s)], primitives[std::size_t(s)], kEdgeBlendPoints, roughness, tolerance);
+    if (!own)
       continue;
     if (std::optional<SegmentEdgeBlend> blend =
-            best_blend_of(s, primitives, fit_subsample(own.points, Eigen::MatrixX3d(), own.weights, kEdgeBlendPoints),
-                          planes_of[std::size_t(s)], roughness, tolerance,
+            best_blend_of(s, primitives, *own, planes_of[std::size_t(s)],
                           std::size_t(s) < types.size() ? types[std::size_t(s)] : std::nullopt))
       candidates.push_back(*blend);
   }

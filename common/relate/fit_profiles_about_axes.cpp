@@ -2,10 +2,9 @@
 
 #include "common/base/constants.h"
 #include "common/fit/capped_rms.h"
-#include "common/fit/check_fit_input.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/fit_profile_about_axis.h"
-#include "common/fit/fit_subsample.h"
+#include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
 
 #include <algorithm>
@@ -73,24 +72,16 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
     const std::optional<Primitive>& mine = primitives[std::size_t(s)];
     const bool typed = std::size_t(s) < types.size() && types[std::size_t(s)].has_value();
     const PrimitiveType asked = typed ? *types[std::size_t(s)] : mine ? mine->type : PrimitiveType::Plane;
-    const SegmentSamples& own = samples[std::size_t(s)];
-    if (!mine || !is_revolution(mine->type) || !primitive_is_valid(*mine) || !is_revolution(asked) ||
-        own.weights.size() != own.points.rows() || !check_fit_input(own.points, Eigen::MatrixX3d(), own.weights, 1).ok())
+    if (!mine || !is_revolution(mine->type) || !primitive_is_valid(*mine) || !is_revolution(asked))
       continue;
-    const FitSample sample = fit_subsample(own.points, Eigen::MatrixX3d(), own.weights, kProfilePoints);
-    const double diagonal = (sample.points.colwise().maxCoeff() - sample.points.colwise().minCoeff()).norm();
-    const double cap = tolerance > 0 ? tolerance : automatic_fit_tolerance(diagonal, roughness);
-    const double weight = sample.weights.sum();
-    if (!(cap > 0) || !std::isfinite(cap) || !(weight > 0))
+    const std::optional<OwnFitScore> own =
+        score_own_fit(samples[std::size_t(s)], mine, kProfilePoints, roughness, tolerance);
+    if (!own)
       continue;
-    const Eigen::Vector3d centroid = (sample.weights.transpose() * sample.points).transpose() / weight;
-    auto rms_of = [&](const Primitive& q) {
-      return capped_rms(sample, cap, [&](const Eigen::Vector3d& x) {
-        return std::abs(project_onto_primitive(q, x).signed_distance);
-      });
-    };
-    const double own_rms = rms_of(*mine);
-    double best_score = type_score(own_rms, primitive_degrees_of_freedom(mine->type), diagonal);
+    const FitSample& sample = own->sample;
+    const Eigen::Vector3d centroid =
+        (sample.weights.transpose() * sample.points).transpose() / sample.weights.sum();
+    double best_score = own->score;
     std::optional<SegmentProfile> best;
     for (int a : axes) {
       const Primitive& c = *primitives[std::size_t(a)];
@@ -99,13 +90,15 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
       for (PrimitiveType type : {PrimitiveType::Cone, PrimitiveType::Sphere, PrimitiveType::Torus}) {
         if (typed && asked != type)
           continue;
-        const std::optional<Primitive> q = profile_about(sample, c, type, cap);
+        const std::optional<Primitive> q = profile_about(sample, c, type, own->cap);
         if (!q)
           continue;
-        const double rms = rms_of(*q);
-        if (!(rms <= std::min(cap, kProfileRmsRatio * own_rms)))
+        const double rms = capped_rms(sample, own->cap, [&](const Eigen::Vector3d& x) {
+          return std::abs(project_onto_primitive(*q, x).signed_distance);
+        });
+        if (!(rms <= std::min(own->cap, kProfileRmsRatio * own->rms)))
           continue;
-        const double score = type_score(rms, profile_degrees_of_freedom(type), diagonal);
+        const double score = type_score(rms, profile_degrees_of_freedom(type), own->diagonal);
         if (score < best_score) {
           best_score = score;
           best = SegmentProfile{s, a, rms, *q};

@@ -4,6 +4,7 @@
 // gets its profile's type there; a band off the axis or tilted from it stays as fitted.
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_profile_about_axis.h"
+#include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/relate/fit_profiles_about_axes.h"
 
@@ -167,6 +168,41 @@ Boss boss(const Eigen::Vector3d& fillet_point, const Eigen::Vector3d& fillet_axi
   EXPECT_TRUE(sphere.status.ok());
   b.primitives[1] = sphere.primitive;
   return b;
+}
+
+// The mark a blend or profile must beat: the own primitive's capped RMS and score on an evenly strided subsample.
+TEST(ScoreOwnFit, ScoresTheOwnPrimitiveOnTheSubsampleAndRefusesBrokenSamples)
+{
+  const double tube = 1.5, sigma = 0.05;
+  const SegmentSamples band = torus_band(kAxisPoint, kAxis, 8, 0, tube, 0, 0.5 * kPi, 3000, sigma, 7);
+  Primitive torus;
+  torus.type = PrimitiveType::Torus;
+  torus.origin = kAxisPoint;
+  torus.axis = kAxis;
+  torus.radius = 8;
+  torus.minor_radius = tube;
+  const std::optional<OwnFitScore> own = score_own_fit(band, torus, 1000, 0, 0.5);
+  ASSERT_TRUE(own.has_value());
+  EXPECT_EQ(own->sample.points.rows(), 1000);
+  EXPECT_DOUBLE_EQ(own->cap, 0.5);
+  EXPECT_NEAR(own->rms, sigma, 0.2 * sigma);
+  EXPECT_TRUE(std::isfinite(own->score));
+  // Without a primitive the mark is the cap and any score beats it; the automatic cap follows the roughness.
+  const std::optional<OwnFitScore> none = score_own_fit(band, std::nullopt, 1000, 0.1, 0);
+  ASSERT_TRUE(none.has_value());
+  EXPECT_GT(none->cap, 0.1);
+  EXPECT_EQ(none->rms, none->cap);
+  EXPECT_EQ(none->score, std::numeric_limits<double>::infinity());
+  SegmentSamples broken = band;
+  broken.points(3, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(score_own_fit(broken, torus, 1000, 0, 0.5).has_value());
+  EXPECT_FALSE(score_own_fit(SegmentSamples(), torus, 1000, 0, 0.5).has_value());
+  SegmentSamples weightless = band;
+  weightless.weights.setZero();
+  EXPECT_FALSE(score_own_fit(weightless, torus, 1000, 0, 0.5).has_value());
+  const std::optional<OwnFitScore> unknown_roughness = score_own_fit(band, torus, 1000, 0, 0);
+  ASSERT_TRUE(unknown_roughness.has_value()); // the automatic cap: 1% of the extent
+  EXPECT_DOUBLE_EQ(unknown_roughness->cap, 0.01 * unknown_roughness->diagonal);
 }
 
 TEST(FitProfilesAboutAxes, AFilletBandAboutTheBoreIsItsTorus)
