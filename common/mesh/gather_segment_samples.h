@@ -11,8 +11,8 @@
 //         skipped. The same on any thread count.
 // Method: the live faces grouped by segment (a counting sort), then each segment's faces walked on their
 //         own. The walk waits on memory (a vcg face is about 100 bytes, read out of order; at 1M faces it
-//         was half of Fit All's fitting phase), so the segments are shared out among the threads, largest
-//         first, each thread with its own vertex -> row table.
+//         was half of Fit All's fitting phase), so the segments are shared out among at most
+//         kMostGatherThreads threads, largest first, each thread with its own vertex -> row table.
 // Cost:   O(F + V + K) time, the walks divided among the threads; O(F + V x threads) extra memory.
 #ifndef PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 #define PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
@@ -72,19 +72,22 @@ FacesBySegment group_faces_by_segment(const MeshType& m, const std::vector<int>&
   return out;
 }
 
-// One thread's tables: local[v] is the row of vertex v in the segment being gathered, stamp[v] the segment
-// that set it (so the tables are never cleared).
+// A thread's table costs 4 bytes a vertex, and the largest segment bounds the time whatever the threads (on
+// the 1M bracket scan it holds a third of the samples): more threads than this would cost memory for nothing.
+constexpr int kMostGatherThreads = 4;
+
+// One thread's tables: local[v] is the row of vertex v in the segment being gathered (-1 between segments).
 struct GatherScratch
 {
-  std::vector<int> local, stamp;
+  std::vector<int> local;
   std::vector<Eigen::Vector3d> normal_sum = {};
   std::vector<double> weight_sum = {};
   std::vector<int> rows = {};
 };
 
-// The samples of segment s, whose faces are [first, last).
+// The samples of the segment whose faces are [first, last); t.local is all -1 again afterwards.
 template <class MeshType>
-SegmentSamples gather_one_segment(const MeshType& m, const int* first, const int* last, int s, GatherScratch& t)
+SegmentSamples gather_one_segment(const MeshType& m, const int* first, const int* last, GatherScratch& t)
 {
   auto position = [](const typename MeshType::VertexType* v) {
     return Eigen::Vector3d(double(v->cP()[0]), double(v->cP()[1]), double(v->cP()[2]));
@@ -110,8 +113,7 @@ SegmentSamples gather_one_segment(const MeshType& m, const int* first, const int
       if (!p[k].allFinite())
         continue;
       const std::size_t v = std::size_t(vi[k]);
-      if (t.stamp[v] != s) {
-        t.stamp[v] = s;
+      if (t.local[v] < 0) {
         t.local[v] = int(t.rows.size());
         t.rows.push_back(vi[k]);
         t.normal_sum.push_back(Eigen::Vector3d::Zero());
@@ -130,6 +132,8 @@ SegmentSamples gather_one_segment(const MeshType& m, const int* first, const int
   advise_huge_pages(samples.normals.data(), std::size_t(n) * 3 * sizeof(double));
   samples.vertex = t.rows;
   samples.area = area;
+  for (int v : t.rows)
+    t.local[std::size_t(v)] = -1;
   for (Eigen::Index r = 0; r < n; ++r) {
     samples.points.row(r) = position(&m.vert[std::size_t(t.rows[std::size_t(r)])]).transpose();
     const double len = t.normal_sum[std::size_t(r)].norm();
@@ -156,16 +160,17 @@ std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std:
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return face_count(a) > face_count(b); });
   // One worker per thread, each taking the next segment in that order.
-  const std::size_t workers = std::size_t(std::min(resolve_thread_count(threads), segment_count));
+  const std::size_t workers =
+      std::size_t(std::min({resolve_thread_count(threads), gather_detail::kMostGatherThreads, segment_count}));
   std::atomic<int> next{0};
   parallel_for(workers, int(workers), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t w = begin; w < end; ++w) {
-      gather_detail::GatherScratch scratch{huge_page_vector(m.vert.size(), -1), huge_page_vector(m.vert.size(), -1)};
+      gather_detail::GatherScratch scratch{huge_page_vector(m.vert.size(), -1)};
       for (int i = next++; i < segment_count; i = next++) {
         const int s = order[std::size_t(i)];
         const int* faces = grouped.faces.data();
         out[std::size_t(s)] = gather_detail::gather_one_segment(m, faces + grouped.start[std::size_t(s)],
-                                                                faces + grouped.start[std::size_t(s) + 1], s, scratch);
+                                                                faces + grouped.start[std::size_t(s) + 1], scratch);
       }
     }
   });
