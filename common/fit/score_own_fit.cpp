@@ -3,7 +3,6 @@
 #include "common/fit/capped_rms.h"
 #include "common/fit/check_fit_input.h"
 #include "common/fit/fit_primitive_auto.h"
-#include "common/geometry/closest_point_on_primitive.h"
 
 #include <cmath>
 #include <limits>
@@ -25,9 +24,7 @@ std::optional<OwnFitScore> score_own_fit(const SegmentSamples& own, const std::o
   out.rms = out.cap;
   out.score = std::numeric_limits<double>::infinity();
   if (primitive) {
-    out.rms = capped_rms(out.sample, out.cap, [&](const Eigen::Vector3d& p) {
-      return std::abs(project_onto_primitive(*primitive, p).signed_distance);
-    });
+    out.rms = capped_rms_to(out.sample, out.cap, *primitive);
     out.score = type_score(out.rms, primitive_degrees_of_freedom(primitive->type), out.diagonal);
   }
   return out;

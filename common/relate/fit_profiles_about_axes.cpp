@@ -93,9 +93,7 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
         const std::optional<Primitive> q = profile_about(sample, c, type, own->cap);
         if (!q)
           continue;
-        const double rms = capped_rms(sample, own->cap, [&](const Eigen::Vector3d& x) {
-          return std::abs(project_onto_primitive(*q, x).signed_distance);
-        });
+        const double rms = capped_rms_to(sample, own->cap, *q);
         if (!(rms <= std::min(own->cap, kProfileRmsRatio * own->rms)))
           continue;
         const double score = type_score(rms, profile_degrees_of_freedom(type), own->diagonal);
