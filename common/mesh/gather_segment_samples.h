@@ -12,7 +12,7 @@
 // Method: the live faces grouped by segment (a counting sort), then each segment's faces walked on their
 //         own. The walk waits on memory (a vcg face is about 100 bytes, read out of order; at 1M faces it
 //         was half of Fit All's fitting phase), so the segments are shared out among at most
-//         kMostGatherThreads threads, largest first, each thread with its own vertex -> row table.
+//         kMostGatherThreads threads, largest first (for_each_largest_first, parallel_for.h), each thread with its own vertex -> row table.
 // Cost:   O(F + V + K) time, the walks divided among the threads; O(F + V x threads) extra memory.
 #ifndef PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 #define PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
@@ -26,7 +26,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <atomic>
 #include <numeric>
 #include <vector>
 
@@ -155,24 +154,17 @@ std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std:
     return out;
   const gather_detail::FacesBySegment grouped =
       gather_detail::group_faces_by_segment(m, segment_of_face, segment_count);
-  auto face_count = [&](int s) { return grouped.start[std::size_t(s) + 1] - grouped.start[std::size_t(s)]; };
-  std::vector<int> order(out.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return face_count(a) > face_count(b); });
-  // One worker per thread, each taking the next segment in that order.
-  const std::size_t workers =
-      std::size_t(std::min({resolve_thread_count(threads), gather_detail::kMostGatherThreads, segment_count}));
-  std::atomic<int> next{0};
-  parallel_for(workers, int(workers), 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t w = begin; w < end; ++w) {
-      gather_detail::GatherScratch scratch{huge_page_vector(m.vert.size(), -1)};
-      for (int i = next++; i < segment_count; i = next++) {
-        const int s = order[std::size_t(i)];
-        const int* faces = grouped.faces.data();
-        out[std::size_t(s)] = gather_detail::gather_one_segment(m, faces + grouped.start[std::size_t(s)],
-                                                                faces + grouped.start[std::size_t(s) + 1], scratch);
-      }
-    }
+  std::vector<std::size_t> face_count(out.size());
+  for (std::size_t s = 0; s < out.size(); ++s)
+    face_count[s] = std::size_t(grouped.start[s + 1] - grouped.start[s]);
+  const int workers = std::min(resolve_thread_count(threads), gather_detail::kMostGatherThreads);
+  std::vector<gather_detail::GatherScratch> scratch(std::size_t(std::max(workers, 1)));
+  for_each_largest_first(face_count, workers, [&](int worker, std::size_t s) {
+    gather_detail::GatherScratch& t = scratch[std::size_t(worker)];
+    if (t.local.size() != m.vert.size()) // allocated by its own thread, on its first segment
+      t.local = huge_page_vector(m.vert.size(), -1);
+    const int* faces = grouped.faces.data();
+    out[s] = gather_detail::gather_one_segment(m, faces + grouped.start[s], faces + grouped.start[s + 1], t);
   });
   return out;
 }

@@ -8,8 +8,8 @@
 // Output: one FitResult per segment, in segment order; a failed status (free-form, too few points, ...) says
 //         why. The results do not depend on the thread count: each segment is fitted by the same
 //         deterministic code, whichever thread takes it.
-// Method: the segments are handed out one at a time (an atomic counter), largest first, so that a large
-//         segment does not start last and keep one thread busy while the others are idle.
+// Method: the segments are handed out one at a time, largest first (for_each_largest_first, parallel_for.h),
+//         so that a large segment does not start last and keep one thread busy while the others are idle.
 // Cost:   the sum of the segments' fit costs divided by the threads used, plus O(K log K) for the order.
 #ifndef PRIMITIVE_EDIT_FIT_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_SEGMENTS_H
@@ -21,9 +21,7 @@
 
 #include <algorithm>
 #include <atomic>
-#include <numeric>
 #include <optional>
-#include <thread>
 #include <vector>
 
 namespace primitive_edit {
