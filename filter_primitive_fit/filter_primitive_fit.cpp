@@ -215,7 +215,11 @@ Status PrimitiveFitFilters::fitOrSnapSegment(MeshModel& mm, const Arguments& par
   }
   const QString what = segment == -1 ? QString("the selected faces") : QString("segment %1").arg(segment);
 
-  const SegmentSamples samples = std::move(gather_segment_samples(m, labels, target + 1)[size_t(target)]);
+  std::vector<int> faces;
+  for (size_t f = 0; f < labels.size(); ++f)
+    if (labels[f] == target)
+      faces.push_back(int(f));
+  const SegmentSamples samples = gather_face_samples(m, faces);
   AutoFitOptions options;
   options.fit.method = FitMethod(method_index);
   if (type_index == 0) {  // as in Fit All: a segment of a rough scan is a primitive within the scan's roughness

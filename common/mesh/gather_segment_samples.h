@@ -13,7 +13,10 @@
 //         own. The walk waits on memory (a vcg face is about 100 bytes, read out of order; at 1M faces it
 //         was half of Fit All's fitting phase), so the segments are shared out among at most
 //         kMostGatherThreads threads, largest first (for_each_largest_first, parallel_for.h), each thread with its own vertex -> row table.
+//         gather_face_samples gives the same samples for one list of faces (a segment, or faces a user picked),
+//         without walking the other segments.
 // Cost:   O(F + V + K) time, the walks divided among the threads; O(F + V x threads) extra memory.
+//         gather_face_samples: O(V + the faces') time, O(V) extra memory.
 #ifndef PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 #define PRIMITIVE_EDIT_GATHER_SEGMENT_SAMPLES_H
 
@@ -167,6 +170,18 @@ std::vector<SegmentSamples> gather_segment_samples(const MeshType& m, const std:
     out[s] = gather_detail::gather_one_segment(m, faces + grouped.start[s], faces + grouped.start[s + 1], t);
   });
   return out;
+}
+
+template <class MeshType>
+SegmentSamples gather_face_samples(const MeshType& m, const std::vector<int>& faces)
+{
+  std::vector<int> live;
+  live.reserve(faces.size());
+  for (int f : faces)
+    if (f >= 0 && std::size_t(f) < m.face.size() && !m.face[std::size_t(f)].IsD())
+      live.push_back(f);
+  gather_detail::GatherScratch scratch{huge_page_vector(m.vert.size(), -1)};
+  return gather_detail::gather_one_segment(m, live.data(), live.data() + live.size(), scratch);
 }
 
 } // namespace primitive_edit

@@ -489,11 +489,11 @@ private:
 
   SegmentSamples picked_samples() const
   {
-    std::vector<int> labels(labels_.size(), -1);
+    std::vector<int> faces;
     for (std::size_t f = 0; f < labels_.size(); ++f)
       if (labels_[f] >= 0 && is_picked(labels_[f]))
-        labels[f] = 0;
-    return std::move(gather_segment_samples(*mesh_, labels, 1).front());
+        faces.push_back(int(f));
+    return gather_face_samples(*mesh_, faces);
   }
 
   // The state before a step: segment ids, recorded primitives and picks (the step adds moved vertices).

@@ -124,6 +124,31 @@ TYPED_TEST(SegmentFitSnapTest, SegmentSamplesAreTheSameOnAnyThreadCount)
   EXPECT_NEAR(area, live_area, 1e-6 * live_area);
 }
 
+TYPED_TEST(SegmentFitSnapTest, FaceSamplesAreTheSegmentsSamples)
+{
+  using M = TypeParam;
+  M m;
+  std::vector<int> segment_of_face;
+  const int count = segmented_plate(m, segment_of_face);
+  ASSERT_GE(count, 2);
+  vcg::tri::Allocator<M>::DeleteFace(m, m.face[1]);
+  const std::vector<SegmentSamples> all = gather_segment_samples(m, segment_of_face, count);
+  for (int s = 0; s < count; ++s) {
+    // The segment's faces, the deleted one and indices out of range among them: those add nothing.
+    std::vector<int> faces = {-1, int(m.face.size())};
+    for (std::size_t f = 0; f < m.face.size(); ++f)
+      if (segment_of_face[f] == s || f == 1)
+        faces.push_back(int(f));
+    const SegmentSamples one = gather_face_samples(m, faces);
+    const SegmentSamples& expected = all[std::size_t(s)];
+    EXPECT_EQ(one.vertex, expected.vertex) << "segment " << s;
+    EXPECT_TRUE(one.points == expected.points && one.normals == expected.normals && one.weights == expected.weights)
+        << "segment " << s;
+    EXPECT_EQ(one.area, expected.area) << "segment " << s;
+  }
+  EXPECT_EQ(gather_face_samples(m, {}).points.rows(), 0);
+}
+
 TYPED_TEST(SegmentFitSnapTest, FitAllWithoutSnapLeavesTheMeshAndExportsEverySegment)
 {
   TypeParam m;
