@@ -3,6 +3,7 @@ software GL), sends keys, clicks and drags with xdotool, takes screenshots (kept
 the current mesh through MeshLab's own Export dialog. Also the checks' tally and two screenshot measures (where
 the mesh is, where the tool's panel ends)."""
 import os
+import select
 import shutil
 import subprocess
 import time
@@ -55,17 +56,26 @@ class Session:
         self.shot_index = 0
 
     def start(self, mesh):
-        for n in range(91, 120):
-            if os.path.exists("/tmp/.X11-unix/X%d" % n) or os.path.exists("/tmp/.X%d-lock" % n):
-                continue
-            self.xvfb = subprocess.Popen(["Xvfb", ":%d" % n, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
-                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            time.sleep(1.0)
-            if self.xvfb.poll() is None:
-                self.display = ":%d" % n
-                break
-        if self.display is None:
+        # Xvfb picks a free display itself and writes its number when it is ready (-displayfd): GUI tests started
+        # side by side by ctest -j once both saw :91 free and started two servers on it, one of which had not yet
+        # given up a second later, so both tests took :91.
+        read_end, write_end = os.pipe()
+        self.xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x1024x24",
+                                      "-nolisten", "tcp"], pass_fds=(write_end,),
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        number = b""
+        deadline = time.time() + 60
+        while not number.endswith(b"\n") and time.time() < deadline and self.xvfb.poll() is None:
+            if select.select([read_end], [], [], 1.0)[0]:
+                chunk = os.read(read_end, 16)
+                if not chunk:
+                    break
+                number += chunk
+        os.close(read_end)
+        if not number.strip().isdigit():
             raise RuntimeError("could not start Xvfb")
+        self.display = ":" + number.strip().decode()
         self.env["DISPLAY"] = self.display
         self.env.pop("WAYLAND_DISPLAY", None)
         # A home of the test's own: no settings of earlier runs, and MeshLab 2025.07's first-start question
