@@ -26,9 +26,11 @@
 // and prints the median time of each stage and of the whole, and the first run's (issue 10's budget: median of 5
 // at 1M). The roughness is measured once before, as the segmentation keeps it on the mesh for Fit All; its time
 // is printed apart. The outputs come from the last run.
+// --threads N runs the segmentation and Fit All on N threads (default 0: every hardware thread); the outputs are
+// the same on any count.
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
 //        [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply]
-//        [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N]
+//        [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]
 #include "bracket/bracket_mesh.h"
 
 #include "common/pipeline/fit_all_segments.h"
@@ -176,6 +178,7 @@ int main(int argc, char** argv)
   primitive_edit::RelationOptions relation_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   int method = 0;
+  int threads = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -201,6 +204,8 @@ int main(int argc, char** argv)
       relation_options.angle_deg = std::atof(argv[++i]);
     else if (a == "--relation-cost" && has_value)
       relation_options.max_cost_increase = std::atof(argv[++i]);
+    else if (a == "--threads" && has_value)
+      params.threads = threads = std::atoi(argv[++i]);
     else if (a == "--method" && has_value)
       method = std::atoi(argv[++i]);
     else if (a == "--labels" && has_value)
@@ -225,7 +230,7 @@ int main(int argc, char** argv)
   if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
       method >= primitive_edit::kFitMethodCount) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N]\n");
+                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -287,6 +292,7 @@ int main(int argc, char** argv)
       return 1;
     }
     const auto t0 = std::chrono::steady_clock::now();
+    snap_options.threads = threads;
     const SnapReport snap = snap_segments(m, segment_of_face, given, snap_options);
     std::printf("snap onto the given primitives: %.3f s, %d vertices moved (%d edge, %d corner of %d on borders, %d "
                 "slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
@@ -305,6 +311,7 @@ int main(int argc, char** argv)
   fit_all.relation_options = relation_options;
   fit_all.snap = true;
   fit_all.snap_options = snap_options;
+  fit_all.threads = threads;
   if (fit_runs > 1) {
     const auto t0 = std::chrono::steady_clock::now();
     surface_roughness(m);

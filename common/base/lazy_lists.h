@@ -3,6 +3,8 @@
 // Input:  the number of indices; per request, an index and a function that appends that index's list to the
 //         vector it is given (and touches nothing else of it).
 // Output: the list as a [begin, end) range, valid until the next request that builds a list (the pool grows).
+//         built(index) reads a list built before (an empty range if there is none) and changes nothing, so
+//         threads may read lists side by side while none is being built.
 // Why:    loops that visit the same few indices many times (fold repair's Gauss-Seidel sweeps revisit each
 //         vertex of their region dozens of times, asking for the same neighbours and surfaces) pay for each
 //         list once, and nothing for the indices they never visit.
@@ -35,6 +37,14 @@ public:
       pool_[start] = int(pool_.size() - start - 1);
     }
     const int* list = pool_.data() + start + 1;
+    return {list, list + list[-1]};
+  }
+
+  std::pair<const int*, const int*> built(std::size_t index) const
+  {
+    if (start_[index] == kNotBuilt)
+      return {nullptr, nullptr};
+    const int* list = pool_.data() + start_[index] + 1;
     return {list, list + list[-1]};
   }
 

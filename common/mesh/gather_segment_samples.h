@@ -12,7 +12,8 @@
 // Method: the live faces grouped by segment (a counting sort), then each segment's faces walked on their
 //         own. The walk waits on memory (a vcg face is about 100 bytes, read out of order; at 1M faces it
 //         was half of Fit All's fitting phase), so the segments are shared out among at most
-//         kMostGatherThreads threads, largest first (for_each_largest_first, parallel_for.h), each thread with its own vertex -> row table.
+//         kMostGatherThreads threads, largest first (for_each_largest_first, parallel_for.h), each thread with
+//         its own vertex -> row table.
 //         gather_face_samples gives the same samples for one list of faces (a segment, or faces a user picked),
 //         without walking the other segments.
 // Cost:   O(F + V + K) time, the walks divided among the threads; O(F + V x threads) extra memory.

@@ -19,7 +19,7 @@
 // Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
 //         relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
 //         segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends (with the same
-//         contacts), snap_segments.
+//         contacts), snap_segments (its fold repair on options.threads too).
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -152,7 +152,9 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
 
   report_progress(progress, 85, "Snapping segments");
   t0 = Clock::now();
-  out.snap = snap_segments(m, segment_of_face, out.primitives, options.snap_options);
+  SnapOptions snap_options = options.snap_options;
+  snap_options.threads = options.threads;
+  out.snap = snap_segments(m, segment_of_face, out.primitives, snap_options);
   write_segment_primitives(m, out.primitives);
   update_normals_and_bounds(m);
   out.snap_seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -6,6 +6,9 @@
 //         non-finite: the face cannot fold); `movable(v)`, asked once per vertex near a fold; and
 //         `constrain(v, p, out)`, which puts into `out` the point of vertex v's surface nearest to p (its
 //         primitive, the edge of two primitives, its tangent plane) and returns false when it has none.
+//         `movable` runs on the calling thread before any sweep moves its vertex, so it may build what
+//         `constrain` reads for that vertex; `constrain` runs on options.threads threads at once, for vertices of
+//         different connected parts of the region, and may write only what belongs to its vertex.
 // Output: RepairFoldsReport. Only movable vertices within max_rounds rings of a fold move, each onto its
 //         surface. A face is folded when its normal turned by more than 90 degrees from its reference or its
 //         area fell below 1e-3 of the reference (snap_segments' guard uses the same test). A connected
@@ -21,15 +24,21 @@
 //         when the folds stall (FoldTrend: they no longer fall by 5% a check). After the last round, each
 //         connected part of the region gets up to settle_sweeps more sweeps while its folds have not stalled,
 //         or while it still moves (unconverged, a part that has just unfolded leaves its first rings pressed
-//         against its fixed border).
-// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep; the sweeps
-//         read each vertex's umbrella from a list built on its first visit (lazy_lists.h), the fold searches the
-//         region's faces from a list extended as the region grows.
+//         against its fixed border). A round's sweeps run the region's connected parts side by side
+//         (for_each_largest_first): a sweep moves a vertex to the mean of its neighbours, which are in its own
+//         part or fixed, so each part's Gauss-Seidel order and result are the same as in one sweep over all,
+//         on any thread count.
+// Cost:   O(F) to find the folds, then O(faces around the region x sweeps) per round and settle sweep, a round's
+//         sweeps divided among the threads; the sweeps read each vertex's umbrella from a list built when it joins
+//         the region (lazy_lists.h), the fold searches the region's faces from a list extended as the region
+//         grows. The parts are kept as the region grows (a union-find over its vertices): O(added vertices'
+//         faces) a round, plus O(region log region) to list them.
 #ifndef PRIMITIVE_EDIT_REPAIR_FOLDS_H
 #define PRIMITIVE_EDIT_REPAIR_FOLDS_H
 
 #include "common/base/huge_page_vector.h"
 #include "common/base/lazy_lists.h"
+#include "common/base/parallel_for.h"
 #include "common/mesh/vertex_faces.h"
 
 #include <Eigen/Core>
@@ -58,6 +67,9 @@ struct RepairFoldsOptions
   // A part that still holds folds keeps its repaired positions when they fold fewer of its faces than its snapped
   // ones (off: it gets its snapped positions back, where a wider repair can start again).
   bool keep_partial = true;
+  // The rounds' sweeps on this many threads (<= 0: every hardware thread), the region's connected parts side by
+  // side; the result is the same on any count.
+  int threads = 1;
 };
 
 struct RepairFoldsReport
@@ -72,6 +84,10 @@ bool face_is_folded(const Eigen::Vector3d& reference, const Eigen::Vector3d& p0,
                     const Eigen::Vector3d& p2);
 
 namespace repair_detail {
+
+// Below this many vertices a region's sweeps stay on one thread: its parts' lists and a thread's start would
+// cost more than they save.
+constexpr std::size_t kVerticesPerSweepThread = 1000;
 
 // The growing region of vertices around the folds and the operations of one repair.
 struct FoldRegion
@@ -93,6 +109,10 @@ struct FoldRegion
   // meets them first: find_folds checks them in that order without walking the vertices again.
   std::vector<int> faces_around = {};
   std::size_t listed_vertices = 0;
+  // A union-find over the region (link[v], v's parent; vertices[0..joined) are joined to their region
+  // neighbours): its connected parts, which a round sweeps side by side.
+  std::vector<int> link = {};
+  std::size_t joined = 0;
 
   int corner(int f, int k) const { return face_vertex[3 * std::size_t(f) + std::size_t(k)]; }
   bool folded(int f) const
@@ -132,6 +152,38 @@ struct FoldRegion
     if (widen)
       for (std::size_t i = last_ring; i < last_ring_begin; ++i)
         add_around(vertices[i]);
+    for (std::size_t i = last_ring_begin; i < vertices.size(); ++i)
+      umbrella_of(vertices[i]); // built here, so that the sweeps only read the lists
+  }
+
+  // The other corners of v's faces: what a sweep averages.
+  std::pair<const int*, const int*> umbrella_of(int v)
+  {
+    return umbrella.get(std::size_t(v), [&](std::vector<int>& pool) {
+      for_faces_of(v, [&](int g) {
+        for (int j = 0; j < 3; ++j)
+          if (corner(g, j) >= 0 && corner(g, j) != v)
+            pool.push_back(corner(g, j));
+      });
+    });
+  }
+
+  // Moves v to the mean of its neighbours, then onto its surface; returns how far it moved.
+  template <class Constrain>
+  double sweep_vertex(int v, Constrain& constrain)
+  {
+    const auto [begin, end] = umbrella.built(std::size_t(v));
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const int* u = begin; u != end; ++u)
+      sum += position[std::size_t(*u)];
+    const int count = int(end - begin);
+    Eigen::Vector3d target;
+    if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite()) {
+      const double move = (target - position[std::size_t(v)]).norm();
+      position[std::size_t(v)] = target;
+      return move;
+    }
+    return 0;
   }
 
   // One Gauss-Seidel pass; returns the longest move.
@@ -139,25 +191,69 @@ struct FoldRegion
   double sweep(Constrain& constrain)
   {
     double longest = 0;
-    for (int v : vertices) {
-      const auto [begin, end] = umbrella.get(std::size_t(v), [&](std::vector<int>& pool) {
-        for_faces_of(v, [&](int g) {
-          for (int j = 0; j < 3; ++j)
-            if (corner(g, j) >= 0 && corner(g, j) != v)
-              pool.push_back(corner(g, j));
-        });
-      });
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (const int* u = begin; u != end; ++u)
-        sum += position[std::size_t(*u)];
-      const int count = int(end - begin);
-      Eigen::Vector3d target;
-      if (count > 0 && constrain(std::size_t(v), Eigen::Vector3d(sum / count), target) && target.allFinite()) {
-        longest = std::max(longest, (target - position[std::size_t(v)]).norm());
-        position[std::size_t(v)] = target;
-      }
-    }
+    for (int v : vertices)
+      longest = std::max(longest, sweep_vertex(v, constrain));
     return longest;
+  }
+
+  // `sweeps` passes, the connected parts side by side on `threads` threads (one pass over all when one thread
+  // or a region too small to share: the result is the same).
+  template <class Constrain>
+  void sweep_parts(Constrain& constrain, int sweeps, int threads)
+  {
+    threads = resolve_thread_count(threads);
+    if (threads <= 1 || vertices.size() < kVerticesPerSweepThread) {
+      for (int s = 0; s < sweeps; ++s)
+        sweep(constrain);
+      return;
+    }
+    const std::vector<std::vector<int>> parts = connected_parts();
+    std::vector<std::size_t> sizes(parts.size());
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      sizes[p] = parts[p].size();
+    for_each_largest_first(sizes, threads, [&](int, std::size_t p) {
+      for (int s = 0; s < sweeps; ++s)
+        for (int v : parts[p])
+          sweep_vertex(v, constrain);
+    });
+  }
+
+  int root(int v)
+  {
+    while (link[std::size_t(v)] != v)
+      v = link[std::size_t(v)] = link[std::size_t(link[std::size_t(v)])];
+    return v;
+  }
+
+  // The region's connected parts (parts share no face, so each can sweep and settle on its own), each in the
+  // region's order; joins the vertices added since the last call.
+  std::vector<std::vector<int>> connected_parts()
+  {
+    if (link.empty()) {
+      link = huge_page_vector<int>(position.size());
+      std::iota(link.begin(), link.end(), 0);
+    }
+    for (; joined < vertices.size(); ++joined) {
+      const int v = vertices[joined];
+      for_faces_of(v, [&](int g) {
+        for (int j = 0; j < 3; ++j)
+          if (corner(g, j) >= 0 && state[std::size_t(corner(g, j))] == 1)
+            link[std::size_t(root(corner(g, j)))] = root(v);
+      });
+    }
+    std::vector<int> roots(vertices.size()), order(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      roots[i] = root(vertices[i]);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return roots[std::size_t(a)] < roots[std::size_t(b)]; });
+    std::vector<std::vector<int>> parts;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k == 0 || roots[std::size_t(order[k])] != roots[std::size_t(order[k - 1])])
+        parts.emplace_back();
+      parts.back().push_back(vertices[std::size_t(order[k])]);
+    }
+    return parts;
   }
 
   // The folded faces among `first` and the faces around the region, each looked at once (mark = round).
@@ -194,35 +290,6 @@ struct FoldRegion
   {
     for (std::size_t i = 0; i < vertices.size(); ++i)
       position[std::size_t(vertices[i])] = saved[i];
-  }
-
-  // The region's vertices by connected part (parts share no face, so each can settle on its own).
-  std::vector<std::vector<int>> connected_parts() const
-  {
-    std::vector<int> parent = huge_page_vector<int>(position.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto root = [&](int v) {
-      while (parent[std::size_t(v)] != v)
-        v = parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
-      return v;
-    };
-    for (int v : vertices)
-      for_faces_of(v, [&](int g) {
-        for (int j = 0; j < 3; ++j)
-          if (corner(g, j) >= 0 && state[std::size_t(corner(g, j))] == 1)
-            parent[std::size_t(root(corner(g, j)))] = root(v);
-      });
-    std::vector<int> part_of_root = huge_page_vector(position.size(), -1);
-    std::vector<std::vector<int>> parts;
-    for (int v : vertices) {
-      int& part = part_of_root[std::size_t(root(v))];
-      if (part < 0) {
-        part = int(parts.size());
-        parts.emplace_back();
-      }
-      parts[std::size_t(part)].push_back(v);
-    }
-    return parts;
   }
 
   // Gives the parts (connected_parts()) that still hold a fold their snapped positions back, unless
@@ -370,8 +437,7 @@ RepairFoldsReport repair_folds(std::vector<Eigen::Vector3d>& position, const std
   for (bool stalled = false; report.rounds < options.max_rounds && !region.folds.empty() && !stalled;
        ++report.rounds) {
     region.grow(movable, options.widen);
-    for (int s = 0; s < options.sweeps_per_round; ++s)
-      region.sweep(constrain);
+    region.sweep_parts(constrain, options.sweeps_per_round, options.threads);
     region.find_folds(first_folds, mark, report.rounds);
     stalled = trend.stalled(region.folds.size());
   }

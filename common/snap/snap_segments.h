@@ -78,6 +78,8 @@ struct SnapOptions
   // primitives fitted to the scan (Fit All): on the bracket scans the wide repair undid almost none of the
   // folds left, and keeping the partial repairs gains more (bench/README.md, Snapping).
   bool wide_repair = true;
+  // The repair's sweeps on this many threads (<= 0: every hardware thread); the result is the same on any count.
+  int threads = 1;
 };
 
 // The options for snapping onto primitives fitted to the scan (Fit All; see wide_repair).
@@ -227,15 +229,19 @@ private:
   }
 
   // Projection onto the nearest of the given primitives (used alone and as the fall-back of edges/corners).
-  Eigen::Vector3d nearest_projection(const std::vector<int>& groups, const Eigen::Vector3d& p) const
+  Eigen::Vector3d nearest_projection(const int* begin, const int* end, const Eigen::Vector3d& p) const
   {
-    PrimitiveProjection best = project_onto_primitive(*group_primitive_[std::size_t(groups[0])], p);
-    for (std::size_t i = 1; i < groups.size(); ++i) {
-      const PrimitiveProjection pr = project_onto_primitive(*group_primitive_[std::size_t(groups[i])], p);
+    PrimitiveProjection best = project_onto_primitive(*group_primitive_[std::size_t(*begin)], p);
+    for (const int* g = begin + 1; g < end; ++g) {
+      const PrimitiveProjection pr = project_onto_primitive(*group_primitive_[std::size_t(*g)], p);
       if (std::abs(pr.signed_distance) < std::abs(best.signed_distance))
         best = pr;
     }
     return best.point;
+  }
+  Eigen::Vector3d nearest_projection(const std::vector<int>& groups, const Eigen::Vector3d& p) const
+  {
+    return nearest_projection(groups.data(), groups.data() + groups.size(), p);
   }
 
   // The edge or corner of three or more primitives nearest to p, if one is within reach.
@@ -370,20 +376,32 @@ private:
     return n;
   }
 
-  // Puts p onto the surface vertex v was snapped to (its tangent plane for unsnapped faces).
+  // The repair's `movable`: slidable(v), and then the groups constrain(v) reads are listed (here, as the repair
+  // asks this on its calling thread, while constrain may run on several).
+  bool movable_for_repair(std::size_t v) const
+  {
+    if (!slidable(v))
+      return false;
+    repair_groups_.get(v, [&](std::vector<int>& pool) {
+      gather(v, scratch_groups_);
+      pool.insert(pool.end(), scratch_groups_.begin(), scratch_groups_.end());
+    });
+    return true;
+  }
+
+  // Puts p onto the surface vertex v was snapped to (its tangent plane for unsnapped faces). Writes only
+  // host_face_[v]: the repair runs it on several threads, for different vertices.
   bool constrain(std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) const
   {
-    std::vector<int>& groups = scratch_groups_;  // called for every vertex of every sweep: no allocation
-    const auto [begin, end] = repair_groups_.get(v, [&](std::vector<int>& pool) {
-      gather(v, groups);
-      pool.insert(pool.end(), groups.begin(), groups.end());
-    });
-    groups.assign(begin, end);
+    const auto [begin, end] = repair_groups_.built(v); // listed by movable_for_repair
     if (kind_[v] == kEdge)
-      return closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
-                                           *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, out);
+      return end - begin >= 2 && closest_point_on_intersection(*group_primitive_[std::size_t(begin[0])],
+                                                               *group_primitive_[std::size_t(begin[1])], p,
+                                                               max_edge_distance_, out);
     if (kind_[v] == kSingle) {
-      out = nearest_projection(groups, p);
+      if (begin == end)
+        return false;
+      out = nearest_projection(begin, end, p);
       return true;
     }
     const std::optional<Eigen::Vector3d> n = tangent_of_unsnapped(v);
@@ -425,13 +443,14 @@ private:
         break;
       RepairFoldsOptions options;
       options.widen = widen;
+      options.threads = options_.threads;
       // Partial repairs only when no wide repair follows: started from them instead of the snapped positions,
       // the wide repair of a widened hole failed (bench/README.md, Snapping).
       options.keep_partial = !widen && !options_.wide_repair;
       if (!widen)
         options.settle_sweeps = 0; // a narrow region is a few rings deep: its rounds have converged
       const RepairFoldsReport pass = repair_folds(
-          position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return slidable(v); },
+          position, face_vertex_, vertex_faces_, reference_, [&](std::size_t v) { return movable_for_repair(v); },
           [&](std::size_t v, const Eigen::Vector3d& p, Eigen::Vector3d& out) { return constrain(v, p, out); }, options);
       rounds += pass.rounds;
       if (pass.folded_faces == 0) // nothing left for the wide pass: spare its O(F) search for folds

@@ -40,4 +40,27 @@ TEST(LazyLists, BuildsEachListOnceAndKeepsIt)
     EXPECT_LE(builds[i], 1) << "index " << i;
 }
 
+TEST(LazyLists, BuiltReadsBuiltListsOnlyAndBuildsNothing)
+{
+  LazyLists lists(10);
+  for (std::size_t i : {3u, 8u, 0u})
+    lists.get(i, [&](std::vector<int>& out) {
+      const std::vector<int> l = list_of(i);
+      out.insert(out.end(), l.begin(), l.end());
+    });
+  for (std::size_t i = 0; i < 10; ++i) {
+    const auto [begin, end] = lists.built(i);
+    if (i == 3 || i == 8 || i == 0)
+      EXPECT_EQ(std::vector<int>(begin, end), list_of(i)) << "index " << i;
+    else
+      EXPECT_EQ(begin, end) << "index " << i; // not built: empty, and still not built afterwards
+  }
+  int builds = 0;
+  lists.get(5, [&](std::vector<int>& out) {
+    ++builds;
+    out.push_back(1);
+  });
+  EXPECT_EQ(builds, 1);
+}
+
 } // namespace

@@ -125,6 +125,39 @@ TEST(RepairFolds, PartlyRepairedPartKeepsItsRepair)
   EXPECT_EQ(g.folded_faces_near(pushed, 2), 0);
 }
 
+// Many folds over a large grid, pushed different ways so that their regions meet in some places and not in
+// others: the repair on several threads (the region's connected parts side by side) moves every vertex exactly
+// as on one, and the region is large enough that the threads are used.
+TEST(RepairFolds, SameRepairOnAnyThreadCount)
+{
+  auto repaired = [](int threads, RepairFoldsReport& report) {
+    FlatGrid g(150, 100);
+    for (int j = 8; j < 100; j += 12)
+      for (int i = 8 + (j / 12) % 3; i < 150; i += 11) {
+        Eigen::Vector3d& p = g.points[std::size_t(g.id(i, j))];
+        p.x() += (i + j) % 2 ? 2.5 : -1.5;
+        p.y() += (i / 11) % 2 ? 1.2 : -2.2;
+      }
+    RepairFoldsOptions options;
+    options.widen = true;
+    options.threads = threads;
+    report = repair_folds(g.points, g.face_vertex, g.vertex_faces, g.reference,
+                          [&](std::size_t v) { return !g.on_border(int(v)); }, onto_plane, options);
+    return g;
+  };
+  RepairFoldsReport one, three;
+  const FlatGrid a = repaired(1, one);
+  const FlatGrid b = repaired(3, three);
+  EXPECT_GT(one.moved_vertices, int(repair_detail::kVerticesPerSweepThread));
+  EXPECT_EQ(one.rounds, three.rounds);
+  EXPECT_EQ(one.moved_vertices, three.moved_vertices);
+  EXPECT_EQ(one.folded_faces, three.folded_faces);
+  int different = 0;
+  for (std::size_t v = 0; v < a.points.size(); ++v)
+    different += a.points[v] != b.points[v];
+  EXPECT_EQ(different, 0);
+}
+
 // The fold counts of three repairs, check by check (printed by a scratch build): a widened hole's rim, whose first
 // sweeps fold more faces than there were before they unfold them all, must not stall; a 1M-face scan's wide
 // region, whose folds fall slowly and then rise as the growing region's sweeps fold new faces at its pinned
