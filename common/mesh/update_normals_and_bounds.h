@@ -4,8 +4,9 @@
 // Input:  a vcg triangle mesh with per-face and per-vertex normals.
 // Output: face normals of unit length, vertex normals the normalised area-weighted sum of their faces'
 //         normals, the bounding box of the live vertices.
-// Method: vcg::tri::UpdateNormal::PerVertexNormalizedPerFace leaves the face normals unnormalised (they
-//         carry the faces' areas for the vertex sum), so they are normalised afterwards.
+// Method: vcg::tri::UpdateNormal::PerVertexNormalizedPerFaceNormalized: the face normals are computed once,
+//         unnormalised (they carry the faces' areas for the vertex sum), then normalised in place (computing them
+//         again to normalise them cost a pass over the faces: 1M faces per Fit All with snap at 1M).
 // Cost:   O(F + V).
 #ifndef PRIMITIVE_EDIT_UPDATE_NORMALS_AND_BOUNDS_H
 #define PRIMITIVE_EDIT_UPDATE_NORMALS_AND_BOUNDS_H
@@ -19,8 +20,7 @@ namespace primitive_edit {
 template <class MeshType>
 void update_normals_and_bounds(MeshType& m)
 {
-  vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(m);
-  vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
+  vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFaceNormalized(m);
   vcg::tri::UpdateBounding<MeshType>::Box(m);
 }
 
