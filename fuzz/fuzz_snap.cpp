@@ -68,6 +68,7 @@ void run(Decoder& in)
   options.prevent_flips = !in.bit();
   options.repair_folds = !in.bit();
   options.wide_repair = !in.bit();
+  options.threads = in.bit() ? 2 : 1; // the repair's parts side by side once its region is large enough
   int target = -1;
   Primitive target_primitive;
   if (K > 0 && in.u8() % 4 == 0) {
