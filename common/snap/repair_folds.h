@@ -153,13 +153,13 @@ struct FoldRegion
       for (std::size_t i = last_ring; i < last_ring_begin; ++i)
         add_around(vertices[i]);
     for (std::size_t i = last_ring_begin; i < vertices.size(); ++i)
-      umbrella_of(vertices[i]); // built here, so that the sweeps only read the lists
+      build_umbrella(vertices[i]); // here, so that the sweeps only read the lists
   }
 
-  // The other corners of v's faces: what a sweep averages.
-  std::pair<const int*, const int*> umbrella_of(int v)
+  // Lists the other corners of v's faces: what a sweep averages.
+  void build_umbrella(int v)
   {
-    return umbrella.get(std::size_t(v), [&](std::vector<int>& pool) {
+    umbrella.get(std::size_t(v), [&](std::vector<int>& pool) {
       for_faces_of(v, [&](int g) {
         for (int j = 0; j < 3; ++j)
           if (corner(g, j) >= 0 && corner(g, j) != v)

@@ -300,9 +300,11 @@ private:
 
   // Whether the repair may slide vertex v: not a corner, not on the mesh's border nor a non-manifold edge
   // (a neighbour met once or more than twice around it), not on a segment's border unless on the edge of two
-  // primitives, and for a vertex of unsnapped faces, not on a crease.
-  bool slidable(std::size_t v) const
+  // primitives, and for a vertex of unsnapped faces, not on a crease. Leaves v's groups in `groups` (none for
+  // a vertex of unsnapped faces): what constrain(v) projects onto.
+  bool slidable(std::size_t v, std::vector<int>& groups) const
   {
+    groups.clear();
     if (m_.vert[v].IsD() || stage_[v] != (kind_[v] == kUntouched ? kAtRest : kOnTarget) || kind_[v] == kCorner ||
         !rest(int(v)).allFinite())
       return false;
@@ -326,7 +328,6 @@ private:
       return false;
     if (kind_[v] == kUntouched)
       return tangent_of_unsnapped(v).has_value();
-    std::vector<int> groups;
     gather(v, groups);
     if (kind_[v] == kEdge)
       return groups.size() == 2;
@@ -376,14 +377,13 @@ private:
     return n;
   }
 
-  // The repair's `movable`: slidable(v), and then the groups constrain(v) reads are listed (here, as the repair
+  // The repair's `movable`: slidable(v), whose groups are listed for constrain(v) to read (here, as the repair
   // asks this on its calling thread, while constrain may run on several).
   bool movable_for_repair(std::size_t v) const
   {
-    if (!slidable(v))
+    if (!slidable(v, scratch_groups_))
       return false;
     repair_groups_.get(v, [&](std::vector<int>& pool) {
-      gather(v, scratch_groups_);
       pool.insert(pool.end(), scratch_groups_.begin(), scratch_groups_.end());
     });
     return true;
