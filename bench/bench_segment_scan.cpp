@@ -22,6 +22,8 @@
 // 2 direct then refined; fit_result.h): with --labels and --types, the direct fit on the true segments.
 // --repair 0 holds folded faces back without first sliding vertices along their surfaces (SnapOptions::repair_folds);
 // --prevent-flips 0 leaves folds as they are (their area is printed either way).
+// --wide-repair 1 follows the repair around each fold with the wide one (SnapOptions::wide_repair), as the edit
+// tool's Apply and "Primitive: Snap Segment" do; Fit All's default (0) leaves it out.
 // --fit-runs N runs Fit All with snap N times on the same segments, the scan's positions put back before each,
 // and prints the median time of each stage and of the whole, and the first run's (issue 10's budget: median of 5
 // at 1M). The roughness is measured once before, as the segmentation keeps it on the mesh for Fit All; its time
@@ -174,7 +176,7 @@ int main(int argc, char** argv)
   int runs = 3, fit_runs = 1;
   double fit_tolerance = 0;
   bool relations = true;
-  bool repair = true, prevent_flips = true;
+  bool repair = true, prevent_flips = true, wide_repair = false;
   primitive_edit::RelationOptions relation_options;
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   int method = 0;
@@ -198,6 +200,8 @@ int main(int argc, char** argv)
       repair = std::atoi(argv[++i]) != 0;
     else if (a == "--prevent-flips" && has_value)
       prevent_flips = std::atoi(argv[++i]) != 0;
+    else if (a == "--wide-repair" && has_value)
+      wide_repair = std::atoi(argv[++i]) != 0;
     else if (a == "--relations" && has_value)
       relations = std::atoi(argv[++i]) != 0;
     else if (a == "--relation-angle" && has_value)
@@ -230,7 +234,7 @@ int main(int argc, char** argv)
   if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
       method >= primitive_edit::kFitMethodCount) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
+                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--wide-repair 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
     return 2;
   }
   bracket::BMesh m;
@@ -285,6 +289,7 @@ int main(int argc, char** argv)
   SnapOptions snap_options = fitted_snap_options(); // the given primitives too are the scan's
   snap_options.repair_folds = repair;
   snap_options.prevent_flips = prevent_flips;
+  snap_options.wide_repair = wide_repair;
   if (!primitives_path.empty()) {
     std::vector<std::optional<Primitive>> given(static_cast<std::size_t>(K));
     if (!read_primitives(primitives_path, given, message)) {

@@ -79,7 +79,7 @@ struct SnapOptions
   // folds left, and keeping the partial repairs gains more (bench/README.md, Snapping).
   bool wide_repair = true;
   // The repair's sweeps on this many threads (<= 0: every hardware thread); the result is the same on any count.
-  int threads = 1;
+  int threads = 0;
 };
 
 // The options for snapping onto primitives fitted to the scan (Fit All; see wide_repair).
