@@ -1,6 +1,7 @@
 #include "primitive_edit_panel.h"
 
 #include "common/base/constants.h"
+#include "common/base/describe_primitive.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
@@ -26,7 +27,8 @@ namespace {
 constexpr double kDegrees = primitive_edit::degrees_from_radians(1.0);  // degrees per radian
 constexpr int kPanelWidth = 280;  // pixels: fixed, so that the view beside the panel never moves
 
-// Full precision, shortest form: what the user reads is the value in use.
+// Full precision, shortest form: what the user reads is the value in use (a fit's round-off shows as 0, and an
+// untouched field keeps the exact value: editedPrimitive skips fields whose text is the one shown).
 QString show_number(double x) { return QString::number(x, 'g', 10); }
 
 } // namespace
@@ -232,8 +234,8 @@ void PrimitiveEditPanel::showPrimitive(const std::optional<Primitive>& primitive
     fill(minor_, primitive->minor_radius);
     fill(half_angle_, primitive->half_angle * kDegrees);
     for (int i = 0; i < 3; ++i) {
-      fill(axis_[i], primitive->axis[i]);
-      fill(origin_[i], primitive->origin[i]);
+      fill(axis_[i], primitive_edit::shown_value(primitive->axis[i], 1.0));
+      fill(origin_[i], primitive_edit::shown_value(primitive->origin[i], primitive_edit::primitive_size(*primitive)));
     }
     rms_->setText(QString::number(rms, 'g', 4));
   } else {
