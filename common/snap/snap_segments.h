@@ -31,9 +31,10 @@
 //         (vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized / PerVertexNormalizedPerFace).
 // Needs:  only the face-vertex lists (no VF/FF topology): a vertex -> face table is built by counting
 //         sort (vertex_faces.h).
-// Cost:   O(V + F) plus O(1) math per vertex; the repair visits only the faces around the folds (see
-//         repair_folds.h); each fall-back round only revisits the faces around the vertices that moved back,
-//         and the way back towards the projection tries at most 8 positions a vertex per sweep, 4 sweeps.
+// Cost:   O(V + F) plus O(1) math per vertex (placed on options.threads threads); the repair visits only the
+//         faces around the folds (see repair_folds.h); each fall-back round only revisits the faces around the
+//         vertices that moved back, and the way back towards the projection tries at most 8 positions a vertex
+//         per sweep, 4 sweeps.
 #ifndef PRIMITIVE_EDIT_SNAP_SEGMENTS_H
 #define PRIMITIVE_EDIT_SNAP_SEGMENTS_H
 
@@ -43,6 +44,7 @@
 #include "common/base/constants.h"
 #include "common/base/huge_page_vector.h"
 #include "common/base/lazy_lists.h"
+#include "common/base/parallel_for.h"
 #include "common/base/primitive.h"
 #include "common/mesh/face_adjacency.h"
 #include "common/mesh/locate_on_surface.h"
@@ -55,6 +57,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -265,37 +268,49 @@ private:
                                          max_edge_distance_, target);
   }
 
+  // Each vertex onto its target, on options_.threads threads: a vertex reads its rest position and the
+  // tables, and writes only its own entries, so the result is the same on any count.
   void place_on_targets()
   {
     const std::size_t nv = m_.vert.size();
     kind_.assign(nv, kUntouched);
     stage_.assign(nv, kAtRest);
-    std::vector<int> groups;
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (m_.vert[v].IsD())
-        continue;
-      gather(v, groups);
-      const Eigen::Vector3d p = rest(int(v));
-      if (groups.empty() || !p.allFinite())
-        continue;
-      if (groups.size() >= 2)
-        ++report_.border_vertices;
-      Eigen::Vector3d target;
-      Kind k = kSingle;
-      if (options_.sharp_edges && groups.size() == 2 &&
-          closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
-                                        *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, target))
-        k = kEdge;
-      else if (!(options_.sharp_edges && groups.size() >= 3 && corner_or_edge(groups, p, target, k)))
-        k = kSingle;
-      if (k == kSingle)
-        target = nearest_projection(groups, p);
-      if (!representable(target))
-        continue;
+    std::atomic<int> border_vertices{0};
+    parallel_for(nv, options_.threads, kFacesPerThread, [&](std::size_t begin, std::size_t end) {
+      std::vector<int> groups;
+      int border = 0;
+      for (std::size_t v = begin; v < end; ++v)
+        border += place_on_target(v, groups) ? 1 : 0;
+      border_vertices += border;
+    });
+    report_.border_vertices += border_vertices;
+  }
+
+  // Places vertex v (groups: scratch); returns whether it is on the faces of two or more primitives.
+  bool place_on_target(std::size_t v, std::vector<int>& groups)
+  {
+    if (m_.vert[v].IsD())
+      return false;
+    gather(v, groups);
+    const Eigen::Vector3d p = rest(int(v));
+    if (groups.empty() || !p.allFinite())
+      return false;
+    Eigen::Vector3d target;
+    Kind k = kSingle;
+    if (options_.sharp_edges && groups.size() == 2 &&
+        closest_point_on_intersection(*group_primitive_[std::size_t(groups[0])],
+                                      *group_primitive_[std::size_t(groups[1])], p, max_edge_distance_, target))
+      k = kEdge;
+    else if (!(options_.sharp_edges && groups.size() >= 3 && corner_or_edge(groups, p, target, k)))
+      k = kSingle;
+    if (k == kSingle)
+      target = nearest_projection(groups, p);
+    if (representable(target)) {
       kind_[v] = k;
       stage_[v] = kOnTarget;
       m_.vert[v].P() = to_coord(target);
     }
+    return groups.size() >= 2;
   }
 
   // Whether the repair may slide vertex v: not a corner, not on the mesh's border nor a non-manifold edge
