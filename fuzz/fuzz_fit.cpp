@@ -4,9 +4,10 @@
 // The bytes are decoded (fuzz_input.h) into up to 100 points of a patch of a plane, sphere, cylinder, cone or
 // torus (or raw coordinates) with noise and special values, optional normals and weights, fit options and a
 // start primitive. Entry points: fit_primitive of a decoded type with each method, fit_quadric_direct,
-// fit_primitive_auto, refine_primitive from the decoded start, and fit_segment. Invariants: a fit that reports
-// success gives a valid primitive of the type asked with finite residuals, and the same input gives the same
-// result again (no state between calls).
+// fit_primitive_auto, refine_primitive from the decoded start, fit_segment, and describe_primitive of the start.
+// Invariants: a fit that reports success gives a valid primitive of the type asked with finite residuals, the
+// same input gives the same result again (no state between calls), and what is shown of a value is itself or 0.
+#include "common/base/describe_primitive.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/fit_quadric_direct.h"
@@ -14,8 +15,10 @@
 #include "common/pipeline/fit_segment.h"
 #include "fuzz/fuzz_input.h"
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 using namespace primitive_edit;
 using namespace fuzz;
@@ -72,6 +75,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const FitResult refined = refine_primitive(start, points, weights, options, int(in.u8() % 8));
   check_fit(refined);
   FUZZ_CHECK(!refined.status.ok() || refined.primitive.type == start.type);
+
+  // What the log and the edit tool's panel show of a primitive, valid or not: each value itself or 0.
+  FUZZ_CHECK(!describe_primitive(start).empty());
+  for (int i = 0; i < 3; ++i)
+    for (const auto& [x, scale] : {std::pair{start.origin[i], primitive_size(start)}, std::pair{start.axis[i], 1.0}}) {
+      const double y = shown_value(x, scale);
+      FUZZ_CHECK(y == x || y == 0 || std::isnan(x));
+    }
 
   // The automatic type (every type is tried: the slowest entry point, so one input in four).
   AutoFitOptions automatic;
