@@ -233,9 +233,10 @@ void PrimitiveEditPanel::showPrimitive(const std::optional<Primitive>& primitive
     fill(radius_, primitive->radius);
     fill(minor_, primitive->minor_radius);
     fill(half_angle_, primitive->half_angle * kDegrees);
+    const double size = primitive_edit::primitive_size(*primitive);
     for (int i = 0; i < 3; ++i) {
       fill(axis_[i], primitive_edit::shown_value(primitive->axis[i], 1.0));
-      fill(origin_[i], primitive_edit::shown_value(primitive->origin[i], primitive_edit::primitive_size(*primitive)));
+      fill(origin_[i], primitive_edit::shown_value(primitive->origin[i], size));
     }
     rms_->setText(QString::number(rms, 'g', 4));
   } else {
