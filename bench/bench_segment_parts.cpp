@@ -186,114 +186,145 @@ void print_scores(const bracket::BMesh& m, const Truth& truth, const std::vector
   std::printf("best IoU per surface:%s\n", per_surface.c_str());
 }
 
+// The command line; see the top of this file.
+struct Options
+{
+  std::string mesh_path, truth_path, segmented_path;
+  int runs = 3, threads = primitive_edit::resolve_thread_count(0);
+  primitive_edit::SegmentByPrimitiveGrowingParams params;
+  primitive_edit::SegmentByNormalAngleParams normal_params;
+  bool normal_angle = false;
+};
+
+// False (with the offending option printed) when an option is not understood.
+bool parse_options(int argc, char** argv, Options& o)
+{
+  o.mesh_path = argv[1];
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--truth")
+      o.truth_path = value;
+    else if (key == "--runs")
+      o.runs = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--tolerance")
+      o.params.tolerance = std::atof(value.c_str());
+    else if (key == "--angle")
+      o.params.normal_angle_deg = o.normal_params.angle_deg = std::atof(value.c_str());
+    else if (key == "--method" && (value == "growing" || value == "normal"))
+      o.normal_angle = value == "normal";
+    else if (key == "--smoothing")
+      o.params.smoothing_iterations = o.normal_params.smoothing_iterations = std::atoi(value.c_str());
+    else if (key == "--min-faces")
+      o.normal_params.min_segment_faces = std::atoi(value.c_str());
+    else if (key == "--threads")
+      o.threads = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--segmented")
+      o.segmented_path = value;
+    else {
+      std::fprintf(stderr, "unknown option %s\n", key.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+// The segmentations of every run on every thread count, timed phase by phase.
+struct TimedRuns
+{
+  std::map<int, std::map<std::string, std::vector<double>>> times;  // threads -> phase -> seconds
+  std::vector<std::string> phase_order{"adjacency"};
+  std::vector<int> segment;
+  primitive_edit::SegmentByPrimitiveGrowingReport report;
+  int K = 0;
+};
+
+// Runs the segmentation o.runs times on each thread count, alternating; false when a segmentation differs from
+// the first one.
+bool time_segmentations(const bracket::BMesh& m, Options o, const std::vector<int>& thread_counts, TimedRuns& out)
+{
+  std::vector<int> first_segment;
+  for (int run = 0; run < o.runs; ++run) {
+    for (const int t : thread_counts) {
+      o.params.threads = t;
+      const auto t0 = std::chrono::steady_clock::now();
+      const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m, t);
+      const auto t1 = std::chrono::steady_clock::now();
+      if (o.normal_angle) {
+        out.K = primitive_edit::segment_by_normal_angle(m, adj, o.normal_params, out.segment);
+        out.report = {};
+        out.report.primitive_of_segment.resize(std::size_t(out.K));
+        out.report.phase_times.push_back(
+            {"normal angle", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count()});
+      } else {
+        out.K = primitive_edit::segment_by_primitive_growing(m, adj, o.params, out.segment, &out.report);
+      }
+      const auto t2 = std::chrono::steady_clock::now();
+      if (first_segment.empty())
+        first_segment = out.segment;
+      else if (out.segment != first_segment) {
+        std::fprintf(stderr, "the segmentation on %d threads differs from the first run's\n", t);
+        return false;
+      }
+      out.times[t]["adjacency"].push_back(std::chrono::duration<double>(t1 - t0).count());
+      out.times[t]["total"].push_back(std::chrono::duration<double>(t2 - t0).count());
+      for (const auto& phase : out.report.phase_times) {
+        if (run == 0 && t == 1)
+          out.phase_order.push_back(phase.phase);
+        out.times[t][phase.phase].push_back(phase.seconds);
+      }
+    }
+  }
+  out.phase_order.push_back("total");
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+  Options o;
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s MESH.ply --truth LABELS.txt|TRUTH.ply [--runs N] [--tolerance MM] "
                          "[--angle DEG] [--segmented OUT.ply]\n", argv[0]);
     return 2;
   }
-  std::string mesh_path = argv[1], truth_path, segmented_path;
-  int runs = 3, threads = primitive_edit::resolve_thread_count(0);
-  primitive_edit::SegmentByPrimitiveGrowingParams params;
-  primitive_edit::SegmentByNormalAngleParams normal_params;
-  bool normal_angle = false;
-  for (int i = 2; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--truth")
-      truth_path = value;
-    else if (key == "--runs")
-      runs = std::max(1, std::atoi(value.c_str()));
-    else if (key == "--tolerance")
-      params.tolerance = std::atof(value.c_str());
-    else if (key == "--angle")
-      params.normal_angle_deg = normal_params.angle_deg = std::atof(value.c_str());
-    else if (key == "--method" && (value == "growing" || value == "normal"))
-      normal_angle = value == "normal";
-    else if (key == "--smoothing")
-      params.smoothing_iterations = normal_params.smoothing_iterations = std::atoi(value.c_str());
-    else if (key == "--min-faces")
-      normal_params.min_segment_faces = std::atoi(value.c_str());
-    else if (key == "--threads")
-      threads = std::max(1, std::atoi(value.c_str()));
-    else if (key == "--segmented")
-      segmented_path = value;
-    else {
-      std::fprintf(stderr, "unknown option %s\n", key.c_str());
-      return 2;
-    }
-  }
+  if (!parse_options(argc, argv, o))
+    return 2;
   bracket::BMesh m;
   std::string message;
-  if (!bracket::load_ply(m, mesh_path, false, &message)) {
+  if (!bracket::load_ply(m, o.mesh_path, false, &message)) {
     std::fprintf(stderr, "%s\n", message.c_str());
     return 1;
   }
   Truth truth;
-  if (!truth_path.empty() && !read_truth(truth_path, m.face.size(), truth, message)) {
+  if (!o.truth_path.empty() && !read_truth(o.truth_path, m.face.size(), truth, message)) {
     std::fprintf(stderr, "%s\n", message.c_str());
     return 1;
   }
   std::vector<int> thread_counts{1};
-  if (threads > 1)
-    thread_counts.push_back(threads);
-  std::printf("%s: %zu faces, %d run(s) per thread count\n", mesh_path.c_str(), m.face.size(), runs);
+  if (o.threads > 1)
+    thread_counts.push_back(o.threads);
+  std::printf("%s: %zu faces, %d run(s) per thread count\n", o.mesh_path.c_str(), m.face.size(), o.runs);
 
-  std::map<int, std::map<std::string, std::vector<double>>> times;  // threads -> phase -> seconds
-  std::vector<std::string> phase_order{"adjacency"};
-  std::vector<int> segment, first_segment;
-  primitive_edit::SegmentByPrimitiveGrowingReport report;
-  int K = 0;
-  for (int run = 0; run < runs; ++run) {
-    for (const int t : thread_counts) {
-      params.threads = t;
-      const auto t0 = std::chrono::steady_clock::now();
-      const primitive_edit::FaceAdjacency adj = primitive_edit::build_face_adjacency(m, t);
-      const auto t1 = std::chrono::steady_clock::now();
-      if (normal_angle) {
-        K = primitive_edit::segment_by_normal_angle(m, adj, normal_params, segment);
-        report = {};
-        report.primitive_of_segment.resize(std::size_t(K));
-        report.phase_times.push_back(
-            {"normal angle", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count()});
-      } else {
-        K = primitive_edit::segment_by_primitive_growing(m, adj, params, segment, &report);
-      }
-      const auto t2 = std::chrono::steady_clock::now();
-      if (first_segment.empty())
-        first_segment = segment;
-      else if (segment != first_segment) {
-        std::fprintf(stderr, "the segmentation on %d threads differs from the first run's\n", t);
-        return 1;
-      }
-      times[t]["adjacency"].push_back(std::chrono::duration<double>(t1 - t0).count());
-      times[t]["total"].push_back(std::chrono::duration<double>(t2 - t0).count());
-      for (const auto& phase : report.phase_times) {
-        if (run == 0 && t == 1)
-          phase_order.push_back(phase.phase);
-        times[t][phase.phase].push_back(phase.seconds);
-      }
-    }
-  }
-  phase_order.push_back("total");
+  TimedRuns r;
+  if (!time_segmentations(m, o, thread_counts, r))
+    return 1;
   for (const int t : thread_counts) {
     std::printf("median seconds, %d thread%s:", t, t > 1 ? "s" : "");
-    for (const std::string& phase : phase_order)
-      std::printf(" %s %.3f", phase.c_str(), median(times[t][phase]));
+    for (const std::string& phase : r.phase_order)
+      std::printf(" %s %.3f", phase.c_str(), median(r.times[t][phase]));
     std::printf("\n");
   }
   if (thread_counts.size() > 1)
-    std::printf("identical segmentations on 1 and %d threads; total ratio %.2fx\n", threads,
-                median(times[1]["total"]) / median(times[threads]["total"]));
-  if (!truth_path.empty())
-    print_scores(m, truth, segment, K, report);
-  if (!segmented_path.empty()) {
+    std::printf("identical segmentations on 1 and %d threads; total ratio %.2fx\n", o.threads,
+                median(r.times[1]["total"]) / median(r.times[o.threads]["total"]));
+  if (!o.truth_path.empty())
+    print_scores(m, truth, r.segment, r.K, r.report);
+  if (!o.segmented_path.empty()) {
     for (std::size_t f = 0; f < m.face.size(); ++f)
-      m.face[f].Q() = segment[f];
-    if (!bracket::save_ply(m, segmented_path, true)) {
-      std::fprintf(stderr, "%s: cannot be written\n", segmented_path.c_str());
+      m.face[f].Q() = r.segment[f];
+    if (!bracket::save_ply(m, o.segmented_path, true)) {
+      std::fprintf(stderr, "%s: cannot be written\n", o.segmented_path.c_str());
       return 1;
     }
   }

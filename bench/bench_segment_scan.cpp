@@ -168,9 +168,8 @@ bool read_primitives(const std::string& path,
   });
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+// The command line; see the top of this file.
+struct Args
 {
   std::string scan_path, labels_path, types_path, primitives_path, segmented_path, fits_path, snapped_path;
   int runs = 3, fit_runs = 1;
@@ -181,143 +180,130 @@ int main(int argc, char** argv)
   primitive_edit::SegmentByPrimitiveGrowingParams params;
   int method = 0;
   int threads = 0;
+};
+
+// The arguments, or nothing when they are not understood (main prints the usage).
+std::optional<Args> parse_args(int argc, char** argv)
+{
+  Args g;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--runs" && has_value)
-      runs = std::max(1, std::atoi(argv[++i]));
+      g.runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--fit-runs" && has_value)
-      fit_runs = std::max(1, std::atoi(argv[++i]));
+      g.fit_runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--tolerance" && has_value)
-      params.tolerance = std::atof(argv[++i]);
+      g.params.tolerance = std::atof(argv[++i]);
     else if (a == "--angle" && has_value)
-      params.normal_angle_deg = std::atof(argv[++i]);
+      g.params.normal_angle_deg = std::atof(argv[++i]);
     else if (a == "--smoothing" && has_value)
-      params.smoothing_iterations = std::atoi(argv[++i]);
+      g.params.smoothing_iterations = std::atoi(argv[++i]);
     else if (a == "--fit-tolerance" && has_value)
-      fit_tolerance = std::atof(argv[++i]);
+      g.fit_tolerance = std::atof(argv[++i]);
     else if (a == "--repair" && has_value)
-      repair = std::atoi(argv[++i]) != 0;
+      g.repair = std::atoi(argv[++i]) != 0;
     else if (a == "--prevent-flips" && has_value)
-      prevent_flips = std::atoi(argv[++i]) != 0;
+      g.prevent_flips = std::atoi(argv[++i]) != 0;
     else if (a == "--wide-repair" && has_value)
-      wide_repair = std::atoi(argv[++i]) != 0;
+      g.wide_repair = std::atoi(argv[++i]) != 0;
     else if (a == "--relations" && has_value)
-      relations = std::atoi(argv[++i]) != 0;
+      g.relations = std::atoi(argv[++i]) != 0;
     else if (a == "--relation-angle" && has_value)
-      relation_options.angle_deg = std::atof(argv[++i]);
+      g.relation_options.angle_deg = std::atof(argv[++i]);
     else if (a == "--relation-cost" && has_value)
-      relation_options.max_cost_increase = std::atof(argv[++i]);
+      g.relation_options.max_cost_increase = std::atof(argv[++i]);
     else if (a == "--threads" && has_value)
-      params.threads = threads = std::atoi(argv[++i]);
+      g.params.threads = g.threads = std::atoi(argv[++i]);
     else if (a == "--method" && has_value)
-      method = std::atoi(argv[++i]);
+      g.method = std::atoi(argv[++i]);
     else if (a == "--labels" && has_value)
-      labels_path = argv[++i];
+      g.labels_path = argv[++i];
     else if (a == "--types" && has_value)
-      types_path = argv[++i];
+      g.types_path = argv[++i];
     else if (a == "--primitives" && has_value)
-      primitives_path = argv[++i];
+      g.primitives_path = argv[++i];
     else if (a == "--segmented" && has_value)
-      segmented_path = argv[++i];
+      g.segmented_path = argv[++i];
     else if (a == "--fits" && has_value)
-      fits_path = argv[++i];
+      g.fits_path = argv[++i];
     else if (a == "--snapped" && has_value)
-      snapped_path = argv[++i];
-    else if (a.rfind("--", 0) != 0 && scan_path.empty())
-      scan_path = a;
-    else {
-      scan_path.clear();
-      break;
-    }
+      g.snapped_path = argv[++i];
+    else if (a.rfind("--", 0) != 0 && g.scan_path.empty())
+      g.scan_path = a;
+    else
+      return std::nullopt;
   }
-  if (scan_path.empty() || !std::isfinite(fit_tolerance) || fit_tolerance < 0 || method < 0 ||
-      method >= primitive_edit::kFitMethodCount) {
-    std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--wide-repair 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
-    return 2;
-  }
-  bracket::BMesh m;
-  std::string message;
-  if (!bracket::load_ply(m, scan_path, false, &message)) {
-    std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
-    return 1;
-  }
+  if (g.scan_path.empty() || !std::isfinite(g.fit_tolerance) || g.fit_tolerance < 0 || g.method < 0 ||
+      g.method >= primitive_edit::kFitMethodCount)
+    return std::nullopt;
+  return g;
+}
 
+// The segments: read from --labels, or the segmentation run --runs times (its median time printed). Returns the
+// segment count, or -1 (message set) when the labels cannot be read.
+int segment_scan(bracket::BMesh& m, const Args& g, std::vector<int>& segment_of_face, std::string& message)
+{
   using namespace primitive_edit;
-  std::vector<double> times;
-  std::vector<int> segment_of_face;
-  SegmentByPrimitiveGrowingReport report;
-  int K = 0;
-  if (!labels_path.empty()) {
-    if (!read_labels(labels_path, m, segment_of_face, K, message)) {
-      std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
-      return 1;
-    }
-    runs = 0;
-    std::printf("%s: %zu faces, %d segments read from %s\n", scan_path.c_str(), m.face.size(), K, labels_path.c_str());
+  if (!g.labels_path.empty()) {
+    int K = 0;
+    if (!read_labels(g.labels_path, m, segment_of_face, K, message))
+      return -1;
+    std::printf("%s: %zu faces, %d segments read from %s\n", g.scan_path.c_str(), m.face.size(), K,
+                g.labels_path.c_str());
+    return K;
   }
-  for (int r = 0; r < runs; ++r) {
+  int K = 0;
+  SegmentByPrimitiveGrowingReport report;
+  std::vector<double> times;
+  for (int r = 0; r < g.runs; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
-    K = segment_by_primitive_growing(m, params, segment_of_face, &report);
+    K = segment_by_primitive_growing(m, g.params, segment_of_face, &report);
     times.push_back(seconds_since(t0));
   }
-  if (runs > 0) {
-    std::sort(times.begin(), times.end());
-    int typed = 0;
-    for (const auto& p : report.primitive_of_segment)
-      typed += p.has_value() ? 1 : 0;
-    std::printf("%s: %zu faces, %d segments (%d with a grown primitive, %d regions grown), tolerance %.4g, "
-                "roughness %.4g\n",
-                scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
-    std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", times[times.size() / 2],
-                runs, times.front(), times.back(), 1e9 * times[times.size() / 2] / double(m.face.size()));
-  }
+  std::sort(times.begin(), times.end());
+  int typed = 0;
+  for (const auto& p : report.primitive_of_segment)
+    typed += p.has_value() ? 1 : 0;
+  std::printf("%s: %zu faces, %d segments (%d with a grown primitive, %d regions grown), tolerance %.4g, "
+              "roughness %.4g\n",
+              g.scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
+  std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", times[times.size() / 2],
+              g.runs, times.front(), times.back(), 1e9 * times[times.size() / 2] / double(m.face.size()));
+  return K;
+}
 
-  if (!segmented_path.empty()) {
-    for (std::size_t f = 0; f < m.face.size(); ++f)
-      m.face[f].Q() = segment_of_face[f];
-    if (!bracket::save_ply(m, segmented_path, true))
-      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", segmented_path.c_str());
-  }
-
-  std::vector<std::optional<PrimitiveType>> forced_type(static_cast<std::size_t>(K));
-  if (!types_path.empty() && !read_types(types_path, forced_type, message)) {
+// --primitives: the segments snapped onto the given primitives, no fitting.
+int snap_onto_given(bracket::BMesh& m, const Args& g, const std::vector<int>& segment_of_face, int K,
+                    primitive_edit::SnapOptions snap_options)
+{
+  using namespace primitive_edit;
+  std::string message;
+  std::vector<std::optional<Primitive>> given(static_cast<std::size_t>(K));
+  if (!read_primitives(g.primitives_path, given, message)) {
     std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
     return 1;
   }
-  SnapOptions snap_options = fitted_snap_options(); // the given primitives too are the scan's
-  snap_options.repair_folds = repair;
-  snap_options.prevent_flips = prevent_flips;
-  snap_options.wide_repair = wide_repair;
-  if (!primitives_path.empty()) {
-    std::vector<std::optional<Primitive>> given(static_cast<std::size_t>(K));
-    if (!read_primitives(primitives_path, given, message)) {
-      std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
-      return 1;
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    snap_options.threads = threads;
-    const SnapReport snap = snap_segments(m, segment_of_face, given, snap_options);
-    std::printf("snap onto the given primitives: %.3f s, %d vertices moved (%d edge, %d corner of %d on borders, %d "
-                "slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
-                seconds_since(t0), snap.moved_vertices, snap.edge_vertices, snap.corner_vertices, snap.border_vertices,
-                snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices, snap.folded_faces,
-                snap.folded_area);
-    if (!snapped_path.empty() && !bracket::save_ply(m, snapped_path, false))
-      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", snapped_path.c_str());
-    return 0;
-  }
-  FitAllSegmentsOptions fit_all;
-  fit_all.tolerance = fit_tolerance;
-  fit_all.types = forced_type;
-  fit_all.fit.method = FitMethod(method);
-  fit_all.relations = relations;
-  fit_all.relation_options = relation_options;
-  fit_all.snap = true;
-  fit_all.snap_options = snap_options;
-  fit_all.threads = threads;
-  if (fit_runs > 1) {
+  const auto t0 = std::chrono::steady_clock::now();
+  snap_options.threads = g.threads;
+  const SnapReport snap = snap_segments(m, segment_of_face, given, snap_options);
+  std::printf("snap onto the given primitives: %.3f s, %d vertices moved (%d edge, %d corner of %d on borders, %d "
+              "slid to unfold faces, %d held back, %d of them partway), %d faces left folded (area %.4g)\n",
+              seconds_since(t0), snap.moved_vertices, snap.edge_vertices, snap.corner_vertices, snap.border_vertices,
+              snap.repaired_vertices, snap.reverted_vertices, snap.partway_vertices, snap.folded_faces,
+              snap.folded_area);
+  if (!g.snapped_path.empty() && !bracket::save_ply(m, g.snapped_path, false))
+    std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", g.snapped_path.c_str());
+  return 0;
+}
+
+// Fit All with snap, --fit-runs times from the scan's positions (the median of each stage printed when more than
+// one); the last run's result, or its failure.
+primitive_edit::FitAllSegmentsResult run_fit_all(bracket::BMesh& m, const Args& g, const std::vector<int>& segment_of_face,
+                                                 const primitive_edit::FitAllSegmentsOptions& fit_all)
+{
+  using namespace primitive_edit;
+  if (g.fit_runs > 1) {
     const auto t0 = std::chrono::steady_clock::now();
     surface_roughness(m);
     std::printf("roughness (kept on the mesh for the runs below): %.3f s\n", seconds_since(t0));
@@ -327,7 +313,7 @@ int main(int argc, char** argv)
     scan_positions.push_back(v.cP());
   FitAllSegmentsResult result;
   std::vector<double> stage_times[4];  // fit, relations, snap, whole
-  for (int r = 0; r < fit_runs; ++r) {
+  for (int r = 0; r < g.fit_runs; ++r) {
     if (r > 0) {
       for (std::size_t v = 0; v < m.vert.size(); ++v)
         m.vert[v].P() = scan_positions[v];
@@ -336,15 +322,13 @@ int main(int argc, char** argv)
     const auto t0 = std::chrono::steady_clock::now();
     result = fit_all_segments(m, segment_of_face, fit_all);
     stage_times[3].push_back(seconds_since(t0));
-    if (!result.status) {
-      std::fprintf(stderr, "bench_segment_scan: %s\n", result.status.error.c_str());
-      return 1;
-    }
+    if (!result.status)
+      return result;
     stage_times[0].push_back(result.fit_seconds);
     stage_times[1].push_back(result.relation_seconds);
     stage_times[2].push_back(result.snap_seconds);
   }
-  if (fit_runs > 1) {
+  if (g.fit_runs > 1) {
     const double first = stage_times[3].front();
     double median[4];
     for (int i = 0; i < 4; ++i) {
@@ -353,10 +337,16 @@ int main(int argc, char** argv)
     }
     std::printf("fit all with snap, median of %d runs: %.3f s (min %.3f, max %.3f, first %.3f): fits %.3f, relations "
                 "%.3f, snap %.3f s\n",
-                fit_runs, median[3], stage_times[3].front(), stage_times[3].back(), first, median[0], median[1],
+                g.fit_runs, median[3], stage_times[3].front(), stage_times[3].back(), first, median[0], median[1],
                 median[2]);
   }
-  const SnapReport& snap = *result.snap;
+  return result;
+}
+
+// The relations, profiles and blends Fit All found, and its fit and snap counts.
+void print_fit_all(const primitive_edit::FitAllSegmentsResult& result, int K, bool relations)
+{
+  using namespace primitive_edit;
   if (relations) {
     std::printf("relations: %zu kept, %d dropped by the check, %.3f s:", result.relations.size(), result.relations_dropped,
                 result.relation_seconds);
@@ -371,19 +361,80 @@ int main(int argc, char** argv)
                   b.plane_a, b.plane_b, b.setback);
     std::printf("\n");
   }
+  const SnapReport& snap = *result.snap;
   std::printf("fit all segments: %.3f s, %d of %d fitted; snap: %.3f s, %d vertices moved (%d edge, %d corner of %d "
               "on borders, %d slid to unfold faces, %d held back, %d of them partway), %d faces left folded "
               "(area %.4g)\n",
               result.fit_seconds, result.fitted, K, result.snap_seconds, snap.moved_vertices, snap.edge_vertices,
               snap.corner_vertices, snap.border_vertices, snap.repaired_vertices, snap.reverted_vertices,
               snap.partway_vertices, snap.folded_faces, snap.folded_area);
-  if (!fits_path.empty()) {
-    std::ofstream out(fits_path);
-    write_fits_json(out, result, scan_path, true);
-    if (!out)
-      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", fits_path.c_str());
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace primitive_edit;
+  const std::optional<Args> parsed = parse_args(argc, argv);
+  if (!parsed) {
+    std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
+                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--wide-repair 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
+    return 2;
   }
-  if (!snapped_path.empty() && !bracket::save_ply(m, snapped_path, false))
-    std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", snapped_path.c_str());
+  const Args& g = *parsed;
+  bracket::BMesh m;
+  std::string message;
+  if (!bracket::load_ply(m, g.scan_path, false, &message)) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+    return 1;
+  }
+  std::vector<int> segment_of_face;
+  const int K = segment_scan(m, g, segment_of_face, message);
+  if (K < 0) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+    return 1;
+  }
+  if (!g.segmented_path.empty()) {
+    for (std::size_t f = 0; f < m.face.size(); ++f)
+      m.face[f].Q() = segment_of_face[f];
+    if (!bracket::save_ply(m, g.segmented_path, true))
+      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", g.segmented_path.c_str());
+  }
+
+  std::vector<std::optional<PrimitiveType>> forced_type(static_cast<std::size_t>(K));
+  if (!g.types_path.empty() && !read_types(g.types_path, forced_type, message)) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", message.c_str());
+    return 1;
+  }
+  SnapOptions snap_options = fitted_snap_options(); // the given primitives too are the scan's
+  snap_options.repair_folds = g.repair;
+  snap_options.prevent_flips = g.prevent_flips;
+  snap_options.wide_repair = g.wide_repair;
+  if (!g.primitives_path.empty())
+    return snap_onto_given(m, g, segment_of_face, K, snap_options);
+
+  FitAllSegmentsOptions fit_all;
+  fit_all.tolerance = g.fit_tolerance;
+  fit_all.types = forced_type;
+  fit_all.fit.method = FitMethod(g.method);
+  fit_all.relations = g.relations;
+  fit_all.relation_options = g.relation_options;
+  fit_all.snap = true;
+  fit_all.snap_options = snap_options;
+  fit_all.threads = g.threads;
+  const FitAllSegmentsResult result = run_fit_all(m, g, segment_of_face, fit_all);
+  if (!result.status) {
+    std::fprintf(stderr, "bench_segment_scan: %s\n", result.status.error.c_str());
+    return 1;
+  }
+  print_fit_all(result, K, g.relations);
+  if (!g.fits_path.empty()) {
+    std::ofstream out(g.fits_path);
+    write_fits_json(out, result, g.scan_path, true);
+    if (!out)
+      std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", g.fits_path.c_str());
+  }
+  if (!g.snapped_path.empty() && !bracket::save_ply(m, g.snapped_path, false))
+    std::fprintf(stderr, "bench_segment_scan: cannot write %s\n", g.snapped_path.c_str());
   return 0;
 }
