@@ -637,6 +637,59 @@ bool parse(int argc, char** argv, Settings& s)
          s.supersample <= 16;
 }
 
+// The rough surface: space displaced by a random field, or the surface moved along its normal (s.roughness_along_normal;
+// `queries` counts its closest-point queries). False (error set) when the field cannot be built.
+bool roughen(Volume& vol, BMesh& ref, const Settings& s, long& queries, std::string& error)
+{
+  queries = 0;
+  if (s.roughness <= 0)
+    return true;
+  DisplacementField field;
+  if (!field.build(ref.bbox.min, ref.bbox.max, s.voxel, s.roughness, s.roughness_length,
+                   s.roughness_along_normal ? 1 : 3, s.seed, &error))
+    return false;
+  if (s.roughness_along_normal)
+    queries = roughen_along_normal(vol, ref, field, s.roughness);
+  else
+    displace(vol, field);
+  return true;
+}
+
+// The iso-surface at s.threshold by marching cubes, cleaned (duplicate vertices, degenerate faces), oriented outward,
+// with its box and normals; false when it is empty.
+bool extract_surface(Volume& vol, const Settings& s, BMesh& scan)
+{
+  {
+    Walker walker;
+    vcg::tri::MarchingCubes<BMesh, Walker> mc(scan, walker);
+    walker.BuildMesh(scan, vol, mc, static_cast<float>(s.threshold));
+  }
+  vcg::tri::Clean<BMesh>::RemoveDuplicateVertex(scan);
+  vcg::tri::Clean<BMesh>::RemoveDegenerateFace(scan);
+  vcg::tri::Clean<BMesh>::RemoveUnreferencedVertex(scan);
+  vcg::tri::Allocator<BMesh>::CompactEveryVector(scan);
+  if (scan.fn == 0)
+    return false;
+  // Marching cubes' winding depends on the sign convention: make the normals point out of the part.
+  if (vcg::tri::Stat<BMesh>::ComputeMeshVolume(scan) < 0)
+    vcg::tri::Clean<BMesh>::FlipMesh(scan);
+  vcg::tri::UpdateBounding<BMesh>::Box(scan);
+  vcg::tri::UpdateNormal<BMesh>::PerVertexNormalizedPerFace(scan);
+  return true;
+}
+
+// --truth: the B-rep face nearest to each scan face, a line each; false when the file cannot be written.
+bool write_truth(BMesh& ref, BMesh& scan, const Settings& s)
+{
+  const std::vector<int> truth = ground_truth(ref, scan);
+  std::ofstream out(s.truth);
+  const std::string scan_name = s.out.substr(s.out.find_last_of('/') + 1);
+  out << "# B-rep face index of the reference face nearest to each face of " << scan_name << ", in face order\n";
+  for (int t : truth)
+    out << t << '\n';
+  return bool(out);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -680,18 +733,9 @@ int main(int argc, char** argv)
   const double t_vox = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
   long queries = 0;
-  if (s.roughness > 0) {
-    DisplacementField field;
-    std::string error;
-    if (!field.build(ref.bbox.min, ref.bbox.max, s.voxel, s.roughness, s.roughness_length,
-                     s.roughness_along_normal ? 1 : 3, s.seed, &error)) {
-      std::fprintf(stderr, "simulate_ct_scan: %s\n", error.c_str());
-      return 1;
-    }
-    if (s.roughness_along_normal)
-      queries = roughen_along_normal(vol, ref, field, s.roughness);
-    else
-      displace(vol, field);
+  if (!roughen(vol, ref, s, queries, message)) {
+    std::fprintf(stderr, "simulate_ct_scan: %s\n", message.c_str());
+    return 1;
   }
   const double t_rough = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
@@ -701,24 +745,10 @@ int main(int argc, char** argv)
 
   t0 = std::chrono::steady_clock::now();
   BMesh scan;
-  {
-    Walker walker;
-    vcg::tri::MarchingCubes<BMesh, Walker> mc(scan, walker);
-    walker.BuildMesh(scan, vol, mc, static_cast<float>(s.threshold));
-  }
-  vcg::tri::Clean<BMesh>::RemoveDuplicateVertex(scan);
-  vcg::tri::Clean<BMesh>::RemoveDegenerateFace(scan);
-  vcg::tri::Clean<BMesh>::RemoveUnreferencedVertex(scan);
-  vcg::tri::Allocator<BMesh>::CompactEveryVector(scan);
-  if (scan.fn == 0) {
+  if (!extract_surface(vol, s, scan)) {
     std::fprintf(stderr, "simulate_ct_scan: the iso-surface is empty (threshold %.3g)\n", s.threshold);
     return 1;
   }
-  // Marching cubes' winding depends on the sign convention: make the normals point out of the part.
-  if (vcg::tri::Stat<BMesh>::ComputeMeshVolume(scan) < 0)
-    vcg::tri::Clean<BMesh>::FlipMesh(scan);
-  vcg::tri::UpdateBounding<BMesh>::Box(scan);
-  vcg::tri::UpdateNormal<BMesh>::PerVertexNormalizedPerFace(scan);
   const double t_mc = seconds_since(t0);
 
   if (!bracket::save_ply(scan, s.out, false)) {
@@ -728,13 +758,7 @@ int main(int argc, char** argv)
   double t_truth = 0;
   if (!s.truth.empty()) {
     t0 = std::chrono::steady_clock::now();
-    const std::vector<int> truth = ground_truth(ref, scan);
-    std::ofstream out(s.truth);
-    const std::string scan_name = s.out.substr(s.out.find_last_of('/') + 1);
-    out << "# B-rep face index of the reference face nearest to each face of " << scan_name << ", in face order\n";
-    for (int t : truth)
-      out << t << '\n';
-    if (!out) {
+    if (!write_truth(ref, scan, s)) {
       std::fprintf(stderr, "simulate_ct_scan: %s: cannot write\n", s.truth.c_str());
       return 1;
     }
