@@ -129,9 +129,16 @@ class Session:
             if ids:
                 return ids[-1]
             if self.meshlab is not None and self.meshlab.poll() is not None:
-                raise RuntimeError("meshlab exited with code %d" % self.meshlab.returncode)
+                raise RuntimeError("meshlab exited with code %d on %s; the end of its output:\n%s" %
+                                   (self.meshlab.returncode, self.display, self.output_tail()))
             time.sleep(0.5)
         raise RuntimeError("no window named %r after %d s" % (name, timeout))
+
+    def output_tail(self, lines=15):
+        """The last lines MeshLab wrote (meshlab.log), so that a failure says why it stopped."""
+        self.log.flush()
+        with open(os.path.join(self.workdir, "meshlab.log"), errors="replace") as f:
+            return "".join(f.readlines()[-lines:])
 
     def key(self, *keys, pause=0.8, focus=True):
         # Keys for the main window (and the view inside it); dialogs keep their own focus.
