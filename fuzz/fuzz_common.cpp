@@ -104,28 +104,11 @@ Params decode_params(Decoder& in)
 }
 
 
+// The walk that keeps a slid vertex on the scan (snap's fold repair), over the live faces of finite corners
+// from the first one, to a decoded point: it ends on such a face, at a finite point when the query is finite.
 template <class MeshType>
-void run(Decoder& in)
+void check_surface_walk(Decoder& in, const MeshType& m)
 {
-  MeshType m;
-  if constexpr (std::is_same_v<MeshType, CMeshO>) {
-    // MeshLab's optional components: a mesh opened from PLY has face quality and colour, a new one not.
-    if (in.bit()) {
-      m.face.EnableQuality();
-      m.face.EnableColor();
-    }
-  }
-  const AttributeCleaner<MeshType> cleaner{m};
-  build_mesh(in, m);
-  const Params params = decode_params(in);
-
-  (void)check_mesh_input(m);
-
-  const FaceAdjacency adj = build_face_adjacency(m);
-  check_adjacency(m, adj);
-
-  // The walk that keeps a slid vertex on the scan (snap's fold repair), over the live faces of finite corners
-  // from the first one, to a decoded point: it ends on such a face, at a finite point when the query is finite.
   if (in.bit()) {
     const std::vector<int> fv = detail::face_vertex_indices(m);
     const VertexFaces vf = build_vertex_faces(fv, m.vert.size());
@@ -151,8 +134,11 @@ void run(Decoder& in)
         break;
       }
   }
+}
 
-  // The seed order's bucket key (seed_queue.h) keeps the order of decoded keys (ties, -0, infinities).
+// The seed order's bucket key (seed_queue.h) keeps the order of decoded keys (ties, -0, infinities).
+void check_ordered_bits(Decoder& in)
+{
   if (in.bit()) {
     const double a = in.special(1.0), b = in.special(1.0);
     if (!std::isnan(a) && !std::isnan(b)) {
@@ -160,23 +146,38 @@ void run(Decoder& in)
       FUZZ_CHECK((a == b) == (ordered_bits(a) == ordered_bits(b)));
     }
   }
+}
 
+// Normal smoothing: a unit (or zero) normal per face.
+template <class MeshType>
+void check_smoothing(const MeshType& m, const FaceAdjacency& adj, const Params& params)
+{
   const std::vector<Eigen::Vector3d> smoothed =
       smooth_face_normals(m, adj, std::max(0, params.segment.smoothing_iterations), std::abs(params.segment.angle_deg));
   FUZZ_CHECK(smoothed.size() == m.face.size());
   for (const auto& n : smoothed)
     FUZZ_CHECK(n.allFinite() && (n.isZero(0.0) || std::abs(n.norm() - 1.0) < 1e-6));
+}
 
-  std::vector<int> seg;
-  int K = segment_by_normal_angle(m, adj, params.segment, seg);
+// The paper's segmentation into seg: dense ids, and the same with the adjacency built inside; returns the count.
+template <class MeshType>
+int check_normal_angle_segmentation(const MeshType& m, const FaceAdjacency& adj, const Params& params,
+                                    std::vector<int>& seg)
+{
+  const int K = segment_by_normal_angle(m, adj, params.segment, seg);
   check_segmentation(m, seg, K);
   {
     std::vector<int> again;
     FUZZ_CHECK(segment_by_normal_angle(m, params.segment, again) == K && again == seg);
   }
+  return K;
+}
 
-  // Primitive growing (the scan segmentation) at its defaults: every live face labelled, deterministic, and
-  // the roughness it measured is the one kept on the mesh for the fits.
+// Primitive growing (the scan segmentation) at its defaults: every live face labelled, deterministic, and
+// the roughness it measured is the one kept on the mesh for the fits.
+template <class MeshType>
+void check_primitive_growing(Decoder& in, MeshType& m, const FaceAdjacency& adj)
+{
   if (in.bit()) {
     SegmentByPrimitiveGrowingParams grow;
     std::vector<int> grown, again;
@@ -189,7 +190,12 @@ void run(Decoder& in)
     const double kept = surface_roughness(m, adj);
     FUZZ_CHECK(std::isfinite(kept) && kept >= 0 && read_surface_roughness(m) == kept);
   }
+}
 
+// Neighbouring segments never share a colour.
+template <class MeshType>
+void check_colours(const MeshType& m, const FaceAdjacency& adj, const std::vector<int>& seg, int K)
+{
   if (K > 0) {
     const std::vector<vcg::Color4b> colour = color_segments(m, adj, seg);
     FUZZ_CHECK(colour.size() == size_t(K));
@@ -199,16 +205,25 @@ void run(Decoder& in)
         FUZZ_CHECK(a == b || colour[size_t(a)] != colour[size_t(b)]);
       }
   }
+}
 
-  // The segmentation survives write / read through the attribute (and face quality on CMeshO when enabled).
+// The segmentation survives write / read through the attribute (and face quality on CMeshO when enabled).
+template <class MeshType>
+void check_segment_ids_kept(MeshType& m, const std::vector<int>& seg)
+{
   write_segment_ids(m, seg);
   {
     std::vector<int> back;
     FUZZ_CHECK(read_segment_ids(m, back));
     FUZZ_CHECK(back == seg);
   }
+}
 
-  // Manual edits: merge, split by plane, move the selected faces to a new segment.
+// Manual edits: merge, split by plane, move the selected faces to a new segment.
+template <class MeshType>
+int check_manual_edits(Decoder& in, const MeshType& m, const FaceAdjacency& adj, const Params& params,
+                       std::vector<int>& seg, int K)
+{
   std::vector<int> selection;
   std::vector<int> listed;
   for (size_t f = 0; f < m.face.size(); ++f)
@@ -233,8 +248,13 @@ void run(Decoder& in)
   check_segmentation(m, seg, K);
   K = move_faces_to_new_segment(seg, selection);
   check_segmentation(m, seg, K);
+  return K;
+}
 
-  // Arbitrary labels (huge, negative, sparse) through compact_segment_ids.
+// Arbitrary labels (huge, negative, sparse) through compact_segment_ids.
+template <class MeshType>
+void check_compaction(Decoder& in, const MeshType& m)
+{
   {
     std::vector<int> labels(m.face.size());
     const bool huge = in.bit();
@@ -243,8 +263,13 @@ void run(Decoder& in)
     const int L = compact_segment_ids(labels);
     check_dense(labels, L);
   }
+}
 
-  // Fits on the segments' samples.
+// Fits on the segments' samples, then the user's overrides: returns each segment's primitive, or none.
+template <class MeshType>
+std::vector<std::optional<Primitive>> fit_segments_checked(Decoder& in, const MeshType& m, const std::vector<int>& seg,
+                                                             int K, const Params& params)
+{
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, seg, K);
   FUZZ_CHECK(samples.size() == size_t(K));
   {
@@ -314,8 +339,12 @@ void run(Decoder& in)
   const int overrides = in.u8() % 4;
   for (int k = 0; k < overrides && K > 0; ++k)
     prim_of_segment[in.u16() % size_t(K)] = fuzz_primitive(in);
+  return prim_of_segment;
+}
 
-  // Sharp edges and corners directly, on fuzzed primitives and points.
+// Sharp edges and corners directly, on fuzzed primitives and points.
+void check_edges_and_corners(Decoder& in)
+{
   {
     const Primitive a = fuzz_primitive(in), b = fuzz_primitive(in), c = fuzz_primitive(in);
     const Eigen::Vector3d p(in.special(2), in.special(2), in.special(2));
@@ -332,8 +361,12 @@ void run(Decoder& in)
     else
       FUZZ_CHECK(corner == Eigen::Vector3d::Constant(7.0));
   }
+}
 
-  // Fit All without snapping (the mesh stays), its counts and its JSON export.
+// Fit All without snapping (the mesh stays), its counts and its JSON export.
+template <class MeshType>
+void check_fit_all(Decoder& in, MeshType& m, const std::vector<int>& seg, int K, const Params& params)
+{
   if (K > 0 && K <= kMaxFittedSegments && in.bit()) {
     FitAllSegmentsOptions options;
     options.tolerance = in.special(0.1);
@@ -388,10 +421,15 @@ void run(Decoder& in)
       FUZZ_CHECK(!std::isfinite(options.tolerance) || options.tolerance < 0);
     }
   }
+}
 
-  // Snap (every segment with a primitive, or one segment as the edit tool's Apply does): no vertex may become
-  // non-finite; vertices not on a snapped segment stay where they are, unless the fold repair slid them;
-  // with flip prevention no face is left folded.
+// Snap (every segment with a primitive, or one segment as the edit tool's Apply does): no vertex may become
+// non-finite; vertices not on a snapped segment stay where they are, unless the fold repair slid them;
+// with flip prevention no face is left folded.
+template <class MeshType>
+void check_snap(Decoder& in, MeshType& m, const std::vector<int>& seg, int K, const Params& params,
+                std::vector<std::optional<Primitive>> prim_of_segment)
+{
   int target = -1;
   Primitive target_primitive;
   if (K > 0 && in.bit()) {
@@ -404,8 +442,12 @@ void run(Decoder& in)
     prim_of_segment = effective;
   }
   snap_checked(m, seg, prim_of_segment, target, target_primitive, params.snap, K);
+}
 
-  // Accuracy: sample the mesh, measure against itself and against fuzzed points.
+// Accuracy: sample the mesh, measure against itself and against fuzzed points.
+template <class MeshType>
+void check_accuracy(Decoder& in, const MeshType& m, const Params& params)
+{
   {
     Eigen::VectorXi faces;
     Eigen::MatrixX3d pts;
@@ -440,6 +482,43 @@ void run(Decoder& in)
         FUZZ_CHECK(distances.allFinite() && distances.size() == Eigen::Index(m.vert.size()));
     }
   }
+}
+
+template <class MeshType>
+void run(Decoder& in)
+{
+  MeshType m;
+  if constexpr (std::is_same_v<MeshType, CMeshO>) {
+    // MeshLab's optional components: a mesh opened from PLY has face quality and colour, a new one not.
+    if (in.bit()) {
+      m.face.EnableQuality();
+      m.face.EnableColor();
+    }
+  }
+  const AttributeCleaner<MeshType> cleaner{m};
+  build_mesh(in, m);
+  const Params params = decode_params(in);
+
+  (void)check_mesh_input(m);
+
+  const FaceAdjacency adj = build_face_adjacency(m);
+  check_adjacency(m, adj);
+
+  check_surface_walk(in, m);
+  check_ordered_bits(in);
+  check_smoothing(m, adj, params);
+  std::vector<int> seg;
+  int K = check_normal_angle_segmentation(m, adj, params, seg);
+  check_primitive_growing(in, m, adj);
+  check_colours(m, adj, seg, K);
+  check_segment_ids_kept(m, seg);
+  K = check_manual_edits(in, m, adj, params, seg, K);
+  check_compaction(in, m);
+  std::vector<std::optional<Primitive>> prim_of_segment = fit_segments_checked(in, m, seg, K, params);
+  check_edges_and_corners(in);
+  check_fit_all(in, m, seg, K, params);
+  check_snap(in, m, seg, K, params, std::move(prim_of_segment));
+  check_accuracy(in, m, params);
 }
 
 } // namespace
