@@ -3,8 +3,8 @@
 #include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "../tests/unit/test_fit_data.h"
+#include "median.h"
 
-#include <algorithm>
 #include <ctime>
 #include <cstdio>
 #include <vector>
@@ -25,8 +25,7 @@ double median_ms(F&& f, int runs = 5)
     f();
     t.push_back(1000.0 * double(std::clock() - a) / CLOCKS_PER_SEC);
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return median(t);
 }
 
 Sample noisy(const Primitive& p, const Patch& patch, int n)

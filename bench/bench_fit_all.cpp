@@ -9,6 +9,7 @@
 #include "bracket/bracket_mesh.h"
 
 #include "common/pipeline/fit_all_segments.h"
+#include "median.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -18,12 +19,6 @@
 #include <vector>
 
 namespace {
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 } // namespace
 

@@ -12,13 +12,13 @@
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_quadric_direct.h"
 #include "../tests/unit/test_fit_data.h"
+#include "median.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,14 +36,6 @@ double cpu_microseconds()
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return 1e6 * double(t.tv_sec) + 1e-3 * double(t.tv_nsec);
-}
-
-double median(std::vector<double> v)
-{
-  if (v.empty())
-    return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 // The median as a table cell; "-" when nothing was measured (cylinder apex, every fit failed).

@@ -4,10 +4,10 @@
 #include "common/base/constants.h"
 #include "common/measure/measure_accuracy.h"
 #include "common/mesh/sample_surface_uniform.h"
+#include "median.h"
 
 #include <vcg/complex/complex.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,12 +56,6 @@ double cpu_seconds()
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 // One measurement: the measured torus has tube radius r_measured, the reference 10 (major 40), so the

@@ -18,6 +18,7 @@
 #include "common/mesh/gather_segment_samples.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/snap/snap_segments.h"
+#include "median.h"
 
 #include <vcg/complex/complex.h>
 
@@ -127,12 +128,6 @@ struct Phase
   double seconds = 0;
   double peak_mb = 0;  // RSS added by the phase at its peak
 };
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 } // namespace
 

@@ -4,10 +4,10 @@
 // thread CPU time (what one core spends, robust when the machine is shared) and in wall-clock time.
 #include "common/mesh/face_adjacency.h"
 #include "common/segment/segment_by_normal_angle.h"
+#include "median.h"
 
 #include <vcg/complex/complex.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,9 +79,7 @@ Timing median_time(int runs, F&& run)
     wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
     cpu.push_back(thread_cpu_seconds() - cpu_start);
   }
-  std::sort(cpu.begin(), cpu.end());
-  std::sort(wall.begin(), wall.end());
-  return {cpu[cpu.size() / 2], wall[wall.size() / 2]};
+  return {median(cpu), median(wall)};
 }
 
 } // namespace

@@ -25,6 +25,7 @@
 #include "common/mesh/face_centroids_and_areas.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
+#include "median.h"
 
 #include <algorithm>
 #include <chrono>
@@ -88,14 +89,6 @@ bool read_truth(const std::string& path, std::size_t face_count, Truth& truth, s
       truth.type_of[surface] = type;
   }
   return true;
-}
-
-double median(std::vector<double> v)
-{
-  if (v.empty())
-    return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 const char* type_word(PrimitiveType t)

@@ -38,6 +38,7 @@
 #include "common/pipeline/fit_all_segments.h"
 #include "common/pipeline/write_fits_json.h"
 #include "common/segment/segment_by_primitive_growing.h"
+#include "median.h"
 
 #include <algorithm>
 #include <chrono>
@@ -261,15 +262,15 @@ int segment_scan(bracket::BMesh& m, const Args& g, std::vector<int>& segment_of_
     K = segment_by_primitive_growing(m, g.params, segment_of_face, &report);
     times.push_back(seconds_since(t0));
   }
-  std::sort(times.begin(), times.end());
+  const auto [fastest, slowest] = std::minmax_element(times.begin(), times.end());
   int typed = 0;
   for (const auto& p : report.primitive_of_segment)
     typed += p.has_value() ? 1 : 0;
   std::printf("%s: %zu faces, %d segments (%d with a grown primitive, %d regions grown), tolerance %.4g, "
               "roughness %.4g\n",
               g.scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
-  std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", times[times.size() / 2],
-              g.runs, times.front(), times.back(), 1e9 * times[times.size() / 2] / double(m.face.size()));
+  std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", median(times), g.runs,
+              *fastest, *slowest, 1e9 * median(times) / double(m.face.size()));
   return K;
 }
 
@@ -329,16 +330,11 @@ primitive_edit::FitAllSegmentsResult run_fit_all(bracket::BMesh& m, const Args& 
     stage_times[2].push_back(result.snap_seconds);
   }
   if (g.fit_runs > 1) {
-    const double first = stage_times[3].front();
-    double median[4];
-    for (int i = 0; i < 4; ++i) {
-      std::sort(stage_times[i].begin(), stage_times[i].end());
-      median[i] = stage_times[i][stage_times[i].size() / 2];
-    }
+    const auto [fastest, slowest] = std::minmax_element(stage_times[3].begin(), stage_times[3].end());
     std::printf("fit all with snap, median of %d runs: %.3f s (min %.3f, max %.3f, first %.3f): fits %.3f, relations "
                 "%.3f, snap %.3f s\n",
-                g.fit_runs, median[3], stage_times[3].front(), stage_times[3].back(), first, median[0], median[1],
-                median[2]);
+                g.fit_runs, median(stage_times[3]), *fastest, *slowest, stage_times[3].front(),
+                median(stage_times[0]), median(stage_times[1]), median(stage_times[2]));
   }
   return result;
 }
