@@ -10,8 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -145,112 +147,152 @@ TYPED_TEST(EditSessionTest, PickAddsRemovesAndClears)
   EXPECT_TRUE(s.picked().empty());
 }
 
-TYPED_TEST(EditSessionTest, SplitByScreenLineMergeFitApplyAndUndo)
+// The lowest and highest distance from the z axis of the side's vertices.
+template <class M>
+std::pair<double, double> side_radius_range(const M& m)
 {
-  auto& s = this->session;
-  auto& m = this->mesh;
-  const Camera camera;
-  const std::vector<typename TypeParam::CoordType> original = [&] {
-    std::vector<typename TypeParam::CoordType> p;
-    for (const auto& v : m.vert)
-      p.push_back(v.cP());
-    return p;
-  }();
+  double lo = 1e9, hi = 0;
+  for (int f = 0; f < kSideFaces; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto& p = m.face[std::size_t(f)].cP(k);
+      const double r = std::hypot(double(p[0]), double(p[1]));
+      lo = std::min(lo, r);
+      hi = std::max(hi, r);
+    }
+  return {lo, hi};
+}
 
-  // Split the side by a horizontal screen line at window y = 430 (above the axis, which is at y = 400).
-  ASSERT_TRUE(s.pick(0, false));
-  const EditOutcome split = s.split_picked_by_screen_line({50, 430}, {750, 430}, camera.modelview,
-                                                          camera.projection, camera.viewport);
-  ASSERT_TRUE(split.status.ok()) << split.status.error;
-  EXPECT_EQ(s.segment_count(), 4);
-  EXPECT_TRUE(s.picked().empty());
-  // Every side face lands on the side of the line its centroid projects to; the caps stay whole.
-  int above = -1, below = -1;
-  for (int f = 0; f < kSideFaces; ++f) {
-    const bool is_above = camera.window_y(centroid(m, f)) >= 430;
-    int& id = is_above ? above : below;
-    if (id < 0)
-      id = s.segment_of(f);
-    ASSERT_EQ(s.segment_of(f), id) << "face " << f;
+// The phases of one scripted session, in order; each asserts what the tool shows after it.
+template <class M>
+class EditSessionStoryTest : public EditSessionTest<M>
+{
+protected:
+  // Splits the side by a horizontal screen line at window y = 430 (above the axis, which is at y = 400); sets
+  // `above` and `below` to the two halves' ids.
+  void split_side_by_screen_line()
+  {
+    auto& s = this->session;
+    ASSERT_TRUE(s.pick(0, false));
+    const EditOutcome split = s.split_picked_by_screen_line({50, 430}, {750, 430}, camera.modelview,
+                                                            camera.projection, camera.viewport);
+    ASSERT_TRUE(split.status.ok()) << split.status.error;
+    EXPECT_EQ(s.segment_count(), 4);
+    EXPECT_TRUE(s.picked().empty());
+    // Every side face lands on the side of the line its centroid projects to; the caps stay whole.
+    for (int f = 0; f < kSideFaces; ++f) {
+      const bool is_above = camera.window_y(centroid(this->mesh, f)) >= 430;
+      int& id = is_above ? above : below;
+      if (id < 0)
+        id = s.segment_of(f);
+      ASSERT_EQ(s.segment_of(f), id) << "face " << f;
+    }
+    EXPECT_NE(above, below);
+    EXPECT_EQ(s.segment_of(kFirstTopFace), s.segment_of(kFirstTopFace + kAround - 1));
   }
-  EXPECT_NE(above, below);
-  EXPECT_EQ(s.segment_of(kFirstTopFace), s.segment_of(kFirstTopFace + kAround - 1));
 
   // A line that misses the picked segment cuts nothing and adds no undo step.
-  ASSERT_TRUE(s.pick(kFirstTopFace, false));
-  const std::size_t depth = s.undo_depth();
-  EXPECT_FALSE(s.split_picked_by_screen_line({0, 5}, {10, 5}, camera.modelview, camera.projection,
-                                             camera.viewport).status.ok());
-  EXPECT_EQ(s.undo_depth(), depth);
+  void split_by_a_line_that_misses()
+  {
+    auto& s = this->session;
+    ASSERT_TRUE(s.pick(kFirstTopFace, false));
+    const std::size_t depth = s.undo_depth();
+    EXPECT_FALSE(s.split_picked_by_screen_line({0, 5}, {10, 5}, camera.modelview, camera.projection,
+                                               camera.viewport).status.ok());
+    EXPECT_EQ(s.undo_depth(), depth);
+  }
 
-  // Merge the two halves back (the second picked with Shift).
-  int face_above = -1, face_below = -1;
-  for (int f = 0; f < kSideFaces; ++f)
-    (s.segment_of(f) == above ? face_above : face_below) = f;
-  ASSERT_TRUE(s.pick(face_above, false));
-  ASSERT_TRUE(s.pick(face_below, true));
-  const EditOutcome merged = s.merge_picked();
-  ASSERT_TRUE(merged.status.ok()) << merged.status.error;
-  EXPECT_EQ(s.segment_count(), 3);
-  EXPECT_EQ(s.picked(), std::vector<int>{s.segment_of(0)});
-  for (int f = 0; f < kSideFaces; ++f)
-    ASSERT_EQ(s.segment_of(f), s.segment_of(0));
-
-  // Fit a cylinder, change its radius, apply.
-  const FitResult fit = s.fit(PrimitiveType::Cylinder);
-  ASSERT_TRUE(fit.status.ok()) << fit.status.error;
-  EXPECT_NEAR(fit.primitive.radius, kRadius, 1e-3);
-  EXPECT_NEAR(std::abs(fit.primitive.axis.z()), 1.0, 1e-4);
-  Primitive edited = *s.edited();
-  edited.radius = 2.5;
-  ASSERT_TRUE(s.set_edited(edited).status.ok());
-  auto radius_of_side = [&](double& lo, double& hi) {
-    lo = 1e9;
-    hi = 0;
+  // Merges the two halves back (the second picked with Shift); sets a face of each.
+  void merge_halves()
+  {
+    auto& s = this->session;
     for (int f = 0; f < kSideFaces; ++f)
-      for (int k = 0; k < 3; ++k) {
-        const auto& p = m.face[std::size_t(f)].cP(k);
-        const double r = std::hypot(double(p[0]), double(p[1]));
-        lo = std::min(lo, r);
-        hi = std::max(hi, r);
-      }
-  };
-  ApplyOutcome applied = s.apply();
-  ASSERT_TRUE(applied.status.ok()) << applied.status.error;
-  EXPECT_GT(applied.report.moved_vertices, 0);
-  double lo, hi;
-  radius_of_side(lo, hi);
-  EXPECT_NEAR(lo, 2.5, 1e-4);
-  EXPECT_NEAR(hi, 2.5, 1e-4);
-  // Normals follow the moved vertices.
-  EXPECT_NEAR(double(m.face[0].cN().Norm()), 1.0, 1e-5);
-  SegmentPrimitives recorded = read_segment_primitives(m, s.segment_count());
-  ASSERT_TRUE(recorded[std::size_t(s.segment_of(0))].has_value());
-  EXPECT_DOUBLE_EQ(recorded[std::size_t(s.segment_of(0))]->radius, 2.5);
+      (s.segment_of(f) == above ? face_above : face_below) = f;
+    ASSERT_TRUE(s.pick(face_above, false));
+    ASSERT_TRUE(s.pick(face_below, true));
+    const EditOutcome merged = s.merge_picked();
+    ASSERT_TRUE(merged.status.ok()) << merged.status.error;
+    EXPECT_EQ(s.segment_count(), 3);
+    EXPECT_EQ(s.picked(), std::vector<int>{s.segment_of(0)});
+    for (int f = 0; f < kSideFaces; ++f)
+      ASSERT_EQ(s.segment_of(f), s.segment_of(0));
+  }
 
-  // Undo the apply: every vertex back, the record gone, the edited cylinder kept to apply again.
-  ASSERT_TRUE(s.undo());
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
-    ASSERT_EQ(m.vert[v].cP(), original[v]) << "vertex " << v;
-  EXPECT_FALSE(read_segment_primitives(m, s.segment_count())[std::size_t(s.segment_of(0))].has_value());
-  ASSERT_TRUE(s.edited().has_value());
-  EXPECT_DOUBLE_EQ(s.edited()->radius, 2.5);
-  applied = s.apply();
-  ASSERT_TRUE(applied.status.ok()) << applied.status.error;
-  radius_of_side(lo, hi);
-  EXPECT_NEAR(lo, 2.5, 1e-4);
-  ASSERT_TRUE(s.undo());
+  // Fits a cylinder to the side, changes its radius to 2.5 and applies: the side is moved onto it, the normals
+  // follow, the primitive is recorded on the mesh.
+  void fit_widen_and_apply()
+  {
+    auto& s = this->session;
+    auto& m = this->mesh;
+    const FitResult fit = s.fit(PrimitiveType::Cylinder);
+    ASSERT_TRUE(fit.status.ok()) << fit.status.error;
+    EXPECT_NEAR(fit.primitive.radius, kRadius, 1e-3);
+    EXPECT_NEAR(std::abs(fit.primitive.axis.z()), 1.0, 1e-4);
+    Primitive edited = *s.edited();
+    edited.radius = 2.5;
+    ASSERT_TRUE(s.set_edited(edited).status.ok());
+    const ApplyOutcome applied = s.apply();
+    ASSERT_TRUE(applied.status.ok()) << applied.status.error;
+    EXPECT_GT(applied.report.moved_vertices, 0);
+    const auto [lo, hi] = side_radius_range(m);
+    EXPECT_NEAR(lo, 2.5, 1e-4);
+    EXPECT_NEAR(hi, 2.5, 1e-4);
+    EXPECT_NEAR(double(m.face[0].cN().Norm()), 1.0, 1e-5);
+    const SegmentPrimitives recorded = read_segment_primitives(m, s.segment_count());
+    ASSERT_TRUE(recorded[std::size_t(s.segment_of(0))].has_value());
+    EXPECT_DOUBLE_EQ(recorded[std::size_t(s.segment_of(0))]->radius, 2.5);
+  }
 
-  // Several steps back: merge, then split, then the automatic segmentation.
-  ASSERT_TRUE(s.undo());
-  EXPECT_EQ(s.segment_count(), 4);
-  EXPECT_NE(s.segment_of(face_above), s.segment_of(face_below));
-  ASSERT_TRUE(s.undo());
-  EXPECT_EQ(s.segment_count(), 3);
-  ASSERT_TRUE(s.undo());
-  EXPECT_FALSE(s.has_segments());
-  EXPECT_FALSE(s.can_undo());
-  EXPECT_FALSE(s.undo());
+  // Undoes the apply: every vertex back to `original`, the record gone, the edited cylinder kept to apply again
+  // (applied and undone once more).
+  void undo_apply(const std::vector<typename M::CoordType>& original)
+  {
+    auto& s = this->session;
+    auto& m = this->mesh;
+    ASSERT_TRUE(s.undo());
+    for (std::size_t v = 0; v < m.vert.size(); ++v)
+      ASSERT_EQ(m.vert[v].cP(), original[v]) << "vertex " << v;
+    EXPECT_FALSE(read_segment_primitives(m, s.segment_count())[std::size_t(s.segment_of(0))].has_value());
+    ASSERT_TRUE(s.edited().has_value());
+    EXPECT_DOUBLE_EQ(s.edited()->radius, 2.5);
+    const ApplyOutcome applied = s.apply();
+    ASSERT_TRUE(applied.status.ok()) << applied.status.error;
+    EXPECT_NEAR(side_radius_range(m).first, 2.5, 1e-4);
+    ASSERT_TRUE(s.undo());
+  }
+
+  // Several steps back: the merge, then the split, then the automatic segmentation.
+  void undo_to_the_start()
+  {
+    auto& s = this->session;
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(s.segment_count(), 4);
+    EXPECT_NE(s.segment_of(face_above), s.segment_of(face_below));
+    ASSERT_TRUE(s.undo());
+    EXPECT_EQ(s.segment_count(), 3);
+    ASSERT_TRUE(s.undo());
+    EXPECT_FALSE(s.has_segments());
+    EXPECT_FALSE(s.can_undo());
+    EXPECT_FALSE(s.undo());
+  }
+
+  const Camera camera;
+  int above = -1, below = -1;          // the halves' segment ids after the split
+  int face_above = -1, face_below = -1; // a face of each half
+};
+
+TYPED_TEST_SUITE(EditSessionStoryTest, MeshTypes);
+
+TYPED_TEST(EditSessionStoryTest, SplitByScreenLineMergeFitApplyAndUndo)
+{
+  std::vector<typename TypeParam::CoordType> original;
+  for (const auto& v : this->mesh.vert)
+    original.push_back(v.cP());
+  ASSERT_NO_FATAL_FAILURE(this->split_side_by_screen_line());
+  ASSERT_NO_FATAL_FAILURE(this->split_by_a_line_that_misses());
+  ASSERT_NO_FATAL_FAILURE(this->merge_halves());
+  ASSERT_NO_FATAL_FAILURE(this->fit_widen_and_apply());
+  ASSERT_NO_FATAL_FAILURE(this->undo_apply(original));
+  ASSERT_NO_FATAL_FAILURE(this->undo_to_the_start());
 }
 
 TYPED_TEST(EditSessionTest, ApplyMakesSharpEdgesAgainstSnappedNeighbours)
