@@ -5,6 +5,7 @@
 #include "common/snap/describe_snap_report.h"
 #include "common/snap/snap_segments.h"
 #include "plate_with_hole.h"
+#include "rounded_box.h"
 #include "test_fit_data.h"
 #include "test_mesh.h"
 
@@ -27,6 +28,8 @@ using namespace primitive_edit;
 namespace {
 
 using plate_fixture::build_mesh;
+using plate_fixture::make_rounded_box;
+using plate_fixture::RoundedBox;
 using plate_fixture::Soup;
 using test_fit::make_cylinder;
 using test_fit::make_plane;
@@ -74,79 +77,6 @@ Soup make_tube(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, doubl
   return s;
 }
 
-// A box [0,L] tessellated on a lattice of step h, edges rounded with radius `round` and every vertex
-// shifted by uniform noise, then rotated by `rot` and moved by `shift`. Labels: side 2a (axis a at 0) and
-// 2a+1 (axis a at L[a]); lattice[v] is the vertex's exact position on the box before rounding/noise
-// (before rotation), bound[v] how many of its coordinates are at a bound (1 side, 2 edge, 3 corner).
-struct RoundedBox
-{
-  Soup soup;
-  std::vector<Eigen::Vector3d> lattice;
-  std::vector<int> bound;
-  std::vector<std::optional<Primitive>> planes;
-};
-
-RoundedBox make_box(const Eigen::Vector3d& size, double h, double round, double noise, const Eigen::Matrix3d& rot,
-                  const Eigen::Vector3d& shift)
-{
-  RoundedBox box;
-  const Eigen::Vector3i n = (size / h).array().round().cast<int>();
-  std::vector<int> index(static_cast<size_t>((n.x() + 1) * (n.y() + 1) * (n.z() + 1)), -1);
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> u(-noise, noise);
-  auto at = [&](const Eigen::Vector3i& c) -> int& {
-    return index[static_cast<size_t>((c.x() * (n.y() + 1) + c.y()) * (n.z() + 1) + c.z())];
-  };
-  for (int i = 0; i <= n.x(); ++i)
-    for (int j = 0; j <= n.y(); ++j)
-      for (int k = 0; k <= n.z(); ++k) {
-        const Eigen::Vector3i c(i, j, k);
-        int bound = 0;
-        for (int a = 0; a < 3; ++a)
-          bound += (c[a] == 0 || c[a] == n[a]) ? 1 : 0;
-        if (bound == 0)
-          continue;
-        const Eigen::Vector3d x = c.cast<double>().cwiseProduct(size).cwiseQuotient(n.cast<double>());
-        // Rounded box: the point at distance `round` from the box shrunk by `round`.
-        const Eigen::Vector3d inner = x.cwiseMax(Eigen::Vector3d::Constant(round)).cwiseMin((size.array() - round).matrix());
-        const Eigen::Vector3d rounded = inner + round * (x - inner).normalized();
-        at(c) = static_cast<int>(box.soup.points.size());
-        box.soup.points.push_back(rot * (rounded + Eigen::Vector3d(u(rng), u(rng), u(rng))) + shift);
-        box.lattice.push_back(x);
-        box.bound.push_back(bound);
-      }
-  for (int side = 0; side < 6; ++side) {
-    const int a = side / 2, ua = (a + 1) % 3, va = (a + 2) % 3;
-    const bool positive = side % 2 == 1;
-    for (int iu = 0; iu < n[ua]; ++iu)
-      for (int iv = 0; iv < n[va]; ++iv) {
-        auto corner = [&](int du, int dv) {
-          Eigen::Vector3i c;
-          c[a] = positive ? n[a] : 0;
-          c[ua] = iu + du;
-          c[va] = iv + dv;
-          return at(c);
-        };
-        const int q00 = corner(0, 0), q10 = corner(1, 0), q11 = corner(1, 1), q01 = corner(0, 1);
-        if (positive) {
-          box.soup.triangles.push_back({q00, q10, q11});
-          box.soup.triangles.push_back({q00, q11, q01});
-        } else {
-          box.soup.triangles.push_back({q00, q11, q10});
-          box.soup.triangles.push_back({q00, q01, q11});
-        }
-        box.soup.labels.push_back(side);
-        box.soup.labels.push_back(side);
-      }
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-    normal[a] = positive ? 1 : -1;
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-    origin[a] = positive ? size[a] : 0;
-    box.planes.push_back(make_plane(rot * origin + shift, rot * normal));
-  }
-  return box;
-}
-
 template <class M>
 class SnapSegmentsTest : public ::testing::Test {};
 
@@ -191,7 +121,7 @@ TYPED_TEST(SnapSegmentsTest, BoxEdgesAndCornersBecomeSharp)
   const Eigen::Matrix3d rot =
       (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())).toRotationMatrix();
   const Eigen::Vector3d shift(2, -1, 3);
-  const RoundedBox box = make_box({10, 6, 4}, 0.25, 0.3, 0.02, rot, shift);
+  const RoundedBox box = make_rounded_box({10, 6, 4}, 0.25, 0.3, 0.02, 12345, rot, shift);
   M m;
   build_mesh(m, box.soup);
   const SnapReport report = snap_segments(m, box.soup.labels, box.planes);
