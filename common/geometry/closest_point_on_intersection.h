@@ -21,12 +21,14 @@
 #define PRIMITIVE_EDIT_CLOSEST_POINT_ON_INTERSECTION_H
 
 #include "common/geometry/closest_point_on_primitive.h"
+#include "common/geometry/iterate_to_nearest_solution.h"
 #include "common/base/primitive.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <limits>
 
 namespace primitive_edit {
 

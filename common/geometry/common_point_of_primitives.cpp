@@ -11,8 +11,6 @@ bool common_point_of_primitives(const std::vector<const Primitive*>& primitives,
   for (const Primitive* prim : primitives)
     if (!prim || !primitive_is_valid(*prim))
       return false;
-  constexpr double kMinSine = 0.08715574274765817;  // sin(5 degrees)
-  constexpr int kMaxIterations = 100;
   const double scale = 1.0 + p.norm();
   Eigen::MatrixX3d jac(k, 3);
   Eigen::VectorXd f(k);
@@ -24,9 +22,7 @@ bool common_point_of_primitives(const std::vector<const Primitive*>& primitives,
     }
   };
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  Eigen::Vector3d x = p;
-  bool converged = false;
-  for (int it = 0; it < kMaxIterations; ++it) {
+  auto step = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     evaluate(x);
     const Eigen::VectorXd r = f + jac * (p - x);
     // Pseudo-inverse through the 3x3 normal matrix; directions with (almost) no constraint are left free,
@@ -39,26 +35,17 @@ bool common_point_of_primitives(const std::vector<const Primitive*>& primitives,
       if (ev(i) > cutoff)
         inv(i) = 1.0 / ev(i);
     const Eigen::Matrix3d& v = eig.eigenvectors();
-    const Eigen::Vector3d next = p - v * inv.asDiagonal() * v.transpose() * (jac.transpose() * r);
-    if (!next.allFinite())
-      return false;
-    const double step = (next - x).norm();
-    x = next;
-    if (step <= 1e-13 * scale) {
-      converged = true;
-      break;
-    }
-    if ((x - p).norm() > 10.0 * max_distance + scale)
-      return false;
-  }
-  if (!converged)
+    return p - v * inv.asDiagonal() * v.transpose() * (jac.transpose() * r);
+  };
+  Eigen::Vector3d x;
+  if (!iterate_to_nearest_solution(p, max_distance, step, x))
     return false;
   evaluate(x);
   if (f.cwiseAbs().maxCoeff() > 1e-10 * scale)
     return false;
   eig.compute(jac.transpose() * jac, Eigen::EigenvaluesOnly);
   // Eigenvalues are sorted increasingly: the first is the smallest squared singular value.
-  if (!(std::sqrt(std::max(0.0, eig.eigenvalues()(0))) >= kMinSine))
+  if (!(std::sqrt(std::max(0.0, eig.eigenvalues()(0))) >= kMinSurfaceSine))
     return false;
   if ((x - p).norm() > max_distance)
     return false;

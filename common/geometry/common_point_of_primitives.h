@@ -19,6 +19,7 @@
 #define PRIMITIVE_EDIT_COMMON_POINT_OF_PRIMITIVES_H
 
 #include "common/geometry/closest_point_on_primitive.h"
+#include "common/geometry/iterate_to_nearest_solution.h"
 #include "common/base/primitive.h"
 
 #include <Eigen/Core>
