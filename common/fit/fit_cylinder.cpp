@@ -30,12 +30,8 @@ FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& n
     starts.push_back(p);
   }
   out = refine_best_start(starts, points, weights, s, options);
-  if (out.status.ok()) {
-    Eigen::Index k = 0;
-    out.primitive.axis.cwiseAbs().maxCoeff(&k);
-    if (out.primitive.axis[k] < 0)
-      out.primitive.axis = -out.primitive.axis;
-  }
+  if (out.status.ok())
+    out.primitive.axis = largest_component_positive(out.primitive.axis);
   return out;
 }
 

@@ -50,10 +50,7 @@ FitResult fit_cylinder_direct(const Eigen::MatrixX3d& points, const Eigen::Vecto
                                  " exceeds 1e4 times the data extent");
     return out;
   }
-  Eigen::Index k = 0;
-  p.axis.cwiseAbs().maxCoeff(&k);
-  if (p.axis[k] < 0)
-    p.axis = -p.axis;
+  p.axis = largest_component_positive(p.axis);
   return direct_fit_result(p, points, weights);
 }
 

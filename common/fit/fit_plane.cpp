@@ -18,17 +18,15 @@ FitResult fit_plane(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& norm
   start.type = PrimitiveType::Plane;
   start.origin = pca.centroid;
   start.axis = pca.axes.col(0).normalized();
-  double orientation = 0;
   if (normals.rows()) {
+    double orientation = 0;
     for (Eigen::Index i = 0; i < normals.rows(); ++i)
       orientation += (weights.size() ? weights[i] : 1.0) * normals.row(i).dot(start.axis);
+    if (orientation < 0)
+      start.axis = -start.axis;
   } else {
-    Eigen::Index k = 0;
-    start.axis.cwiseAbs().maxCoeff(&k);
-    orientation = start.axis[k];
+    start.axis = largest_component_positive(start.axis);
   }
-  if (orientation < 0)
-    start.axis = -start.axis;
   return refine_best_start({start}, points, weights, fit_subsample(points, normals, weights, 2000), options);
 }
 

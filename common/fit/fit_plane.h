@@ -11,6 +11,7 @@
 #ifndef PRIMITIVE_EDIT_FIT_PLANE_H
 #define PRIMITIVE_EDIT_FIT_PLANE_H
 
+#include "common/base/canonicalize_primitive.h"
 #include "common/fit/check_fit_input.h"
 #include "common/fit/minimum_points_for.h"
 #include "common/fit/fit_subsample.h"

@@ -13,10 +13,7 @@ FitResult fit_plane_direct(const Eigen::MatrixX3d& points, const Eigen::VectorXd
   p.type = PrimitiveType::Plane;
   p.origin = pca.centroid;
   p.axis = pca.axes.col(0).normalized();
-  Eigen::Index k = 0;
-  p.axis.cwiseAbs().maxCoeff(&k);
-  if (p.axis[k] < 0)
-    p.axis = -p.axis;
+  p.axis = largest_component_positive(p.axis);
   return quadric_direct::direct_fit_result(p, points, weights);
 }
 

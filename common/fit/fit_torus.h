@@ -19,6 +19,7 @@
 #ifndef PRIMITIVE_EDIT_FIT_TORUS_H
 #define PRIMITIVE_EDIT_FIT_TORUS_H
 
+#include "common/base/canonicalize_primitive.h"
 #include "common/geometry/axis_orthogonal_to_normals.h"
 #include "common/fit/check_fit_input.h"
 #include "common/fit/fit_circle_around_axis.h"
