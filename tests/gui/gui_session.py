@@ -2,6 +2,7 @@
 software GL), sends keys, clicks and drags with xdotool, takes screenshots (kept as PNG artifacts) and exports
 the current mesh through MeshLab's own Export dialog. Also the checks' tally and two screenshot measures (where
 the mesh is, where the tool's panel ends)."""
+import contextlib
 import os
 import select
 import shutil
@@ -94,6 +95,23 @@ class Session:
         self.restore_window(pause=0)
         self.xdo("windowfocus", self.window)
         time.sleep(4)
+
+    @contextlib.contextmanager
+    def running(self, what="GUI session"):
+        """`with s.running():` around a session's steps: an exception in them fails a check ("<what> ran
+        without error"; the screenshots so far are kept), and MeshLab and Xvfb are stopped in any case."""
+        try:
+            yield self
+        except Exception as e:  # report, keep the screenshots, and fail
+            check(False, "%s ran without error: %s" % (what, e))
+        finally:
+            self.stop()
+
+    def zoom_out(self, steps=2):
+        """Wheel steps out with the pointer in the view; before the tool starts, as the tool takes the wheel."""
+        self.xdo("mousemove", "640", "500")
+        self.xdo("click", "--repeat", str(steps), "--delay", "300", "4")
+        time.sleep(1.0)
 
     def restore_window(self, pause=2.0):
         """Puts the window back at the screen's size: without a window manager it shrinks when a panel docks."""
