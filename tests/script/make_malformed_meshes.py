@@ -11,34 +11,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import write_ply  # noqa: E402
-
-
-def box(n=6, size=(10.0, 6.0, 4.0), offset=(0.0, 0.0, 0.0)):
-    """A closed box, each side an n x n grid, vertices welded, outward faces."""
-    vertices, index, faces = [], {}, []
-
-    def vid(p):
-        key = tuple(round(c, 6) for c in p)
-        if key not in index:
-            index[key] = len(vertices)
-            vertices.append([p[k] + offset[k] for k in range(3)])
-        return index[key]
-
-    for axis in range(3):
-        u, v = (axis + 1) % 3, (axis + 2) % 3
-        for side in (0, 1):
-            def point(i, j):
-                p = [0.0, 0.0, 0.0]
-                p[axis] = size[axis] * side
-                p[u] = size[u] * i / n
-                p[v] = size[v] * j / n
-                return vid(p)
-            for i in range(n):
-                for j in range(n):
-                    a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
-                    faces += [[a, b, c], [a, c, d]] if side == 1 else [[a, c, b], [a, d, c]]
-    return vertices, faces
+from meshlab_script import box_mesh, write_ply  # noqa: E402
 
 
 def cylinder(radius=2.0, height=4.0, around=24, along=6, centre=(20.0, 0.0, 0.0)):
@@ -69,7 +42,7 @@ def combine(*meshes):
 def make_all(outdir):
     os.makedirs(outdir, exist_ok=True)
     meshes = {}
-    base_v, base_f = combine(box(), cylinder())
+    base_v, base_f = combine(box_mesh(), cylinder())
 
     meshes["empty"] = ([], [])
     meshes["one_triangle"] = ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
@@ -105,7 +78,7 @@ def make_all(outdir):
     meshes["nonmanifold_edge"] = (v, base_f + [[e0, e1, n0], [e1, e0, n0 + 1]])
 
     # Non-manifold vertex: a second box touching the first at one corner (shared vertex).
-    bv, bf = box(n=3, size=(3.0, 3.0, 3.0), offset=(-3.0, -3.0, -3.0))
+    bv, bf = box_mesh(n=3, size=(3.0, 3.0, 3.0), offset=(-3.0, -3.0, -3.0))
     v = [list(p) for p in base_v]
     n0 = len(v)
     corner = min(range(len(bv)), key=lambda i: sum((bv[i][k] - 0.0) ** 2 for k in range(3)))
@@ -125,7 +98,7 @@ def make_all(outdir):
     # Holes, isolated vertices and several shells.
     v = [list(p) for p in base_v] + [[50, 50, 50], [-40, 0, 3], [0, -70, 0]]
     f = [x for k, x in enumerate(base_f) if k % 11 not in (0, 1)]
-    sv, sf = box(n=2, size=(1.0, 1.0, 1.0), offset=(30.0, 30.0, 0.0))
+    sv, sf = box_mesh(n=2, size=(1.0, 1.0, 1.0), offset=(30.0, 30.0, 0.0))
     meshes["holes_isolated_shells"] = combine((v, f), (sv, sf))
 
     # 10^6-scale coordinates: far from the origin and huge.

@@ -1,4 +1,5 @@
-"""Helpers for the meshlabserver script tests: PLY reading/writing, .mlx writing, running meshlabserver.
+"""Helpers for the meshlabserver script tests: PLY reading/writing, .mlx writing, running meshlabserver, a
+welded box to run the filters on.
 
 Standard library only. meshlabserver 2020.09 asserts unless a script lists every parameter of a filter,
 so scripts are written from complete parameter lists.
@@ -23,6 +24,35 @@ def test_args():
     args = parser.parse_args()
     os.makedirs(args.workdir, exist_ok=True)
     return args
+
+
+def box_mesh(n=6, size=(10.0, 6.0, 4.0), offset=(0.0, 0.0, 0.0)):
+    """A closed box [0, size] moved by offset, each side an n x n grid, vertices welded, outward faces.
+    Returns (vertices, faces)."""
+    vertices, index, faces = [], {}, []
+
+    def vid(p):
+        key = tuple(round(c, 6) for c in p)
+        if key not in index:
+            index[key] = len(vertices)
+            vertices.append([p[k] + offset[k] for k in range(3)])
+        return index[key]
+
+    for axis in range(3):
+        u, v = (axis + 1) % 3, (axis + 2) % 3
+        for side in (0, 1):
+            def point(i, j):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = size[axis] * side
+                p[u] = size[u] * i / n
+                p[v] = size[v] * j / n
+                return vid(p)
+            for i in range(n):
+                for j in range(n):
+                    a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
+                    # (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+                    faces += [[a, b, c], [a, c, d]] if side == 1 else [[a, c, b], [a, d, c]]
+    return vertices, faces
 
 
 def write_ply(path, vertices, faces, face_quality=None):

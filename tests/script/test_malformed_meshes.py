@@ -24,8 +24,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_malformed_meshes import box, make_all  # noqa: E402
-from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply  # noqa: E402
+from make_malformed_meshes import make_all  # noqa: E402
+from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, test_args, write_mlx,  # noqa: E402
+                            write_ply)
 
 TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
 METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
@@ -156,7 +157,7 @@ def main():
     c = Checker()
     meshes = make_all(os.path.join(args.workdir, "malformed"))
     reference = os.path.join(args.workdir, "reference_box.ply")
-    v, f = box()
+    v, f = box_mesh()
     write_ply(reference, v, f)
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:

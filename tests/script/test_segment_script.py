@@ -4,41 +4,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply
-
-SIZE = (10.0, 6.0, 4.0)
-
-
-def box_mesh(n):
-    """A closed box [0,10]x[0,6]x[0,4], each side an n x n grid, vertices welded, outward faces."""
-    vertices, index, faces = [], {}, []
-
-    def vid(p):
-        key = tuple(round(c, 6) for c in p)
-        if key not in index:
-            index[key] = len(vertices)
-            vertices.append(list(p))
-        return index[key]
-
-    for axis in range(3):
-        u, v = (axis + 1) % 3, (axis + 2) % 3
-        for side in (0, 1):
-            def point(i, j):
-                p = [0.0, 0.0, 0.0]
-                p[axis] = SIZE[axis] * side
-                p[u] = SIZE[u] * i / n
-                p[v] = SIZE[v] * j / n
-                return vid(p)
-            for i in range(n):
-                for j in range(n):
-                    a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
-                    # (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
-                    if side == 1:
-                        faces += [[a, b, c], [a, c, d]]
-                    else:
-                        faces += [[a, c, b], [a, d, c]]
-    return vertices, faces
-
+from meshlab_script import Checker, box_mesh, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply
 
 def normal(vertices, f):
     a, b, c = (vertices[i] for i in f)
