@@ -20,14 +20,9 @@ FitResult fit_cone_direct(const Eigen::MatrixX3d& points, const Eigen::VectorXd&
 {
   using namespace quadric_direct;
   FitResult out;
-  out.status = check_direct_input(PrimitiveType::Cone, points, weights);
+  const QuadricMoments m = checked_quadric_moments(PrimitiveType::Cone, points, weights, out.status);
   if (!out.status)
     return out;
-  const QuadricMoments m = quadric_moments(points, weights);
-  if (!m.ok) {
-    out.status = Status::failure("the points' quadric moments are not finite");
-    return out;
-  }
   const Eigen::Vector3d w = minimise_over_axis<5>(m, fit_cone_direct_detail::cone_basis).normalized();
   Eigen::Matrix<double, 5, 1> theta = pencil_minimum<5>(m, fit_cone_direct_detail::cone_basis(w), true).theta;
   if (theta[0] < 0)

@@ -20,14 +20,9 @@ FitResult fit_cylinder_direct(const Eigen::MatrixX3d& points, const Eigen::Vecto
 {
   using namespace quadric_direct;
   FitResult out;
-  out.status = check_direct_input(PrimitiveType::Cylinder, points, weights);
+  const QuadricMoments m = checked_quadric_moments(PrimitiveType::Cylinder, points, weights, out.status);
   if (!out.status)
     return out;
-  const QuadricMoments m = quadric_moments(points, weights);
-  if (!m.ok) {
-    out.status = Status::failure("the points' quadric moments are not finite");
-    return out;
-  }
   const Eigen::Vector3d w = minimise_over_axis<3>(m, fit_cylinder_direct_detail::cylinder_basis);
   const Eigen::Matrix<double, 9, 3> G = fit_cylinder_direct_detail::cylinder_basis(w);
   const PencilMinimum<3> best = pencil_minimum<3>(m, G, true);

@@ -87,6 +87,18 @@ Status check_direct_input(PrimitiveType type, const Eigen::MatrixX3d& points, co
   return Status::success();
 }
 
+QuadricMoments checked_quadric_moments(PrimitiveType type, const Eigen::MatrixX3d& points,
+                                       const Eigen::VectorXd& weights, Status& status)
+{
+  status = check_direct_input(type, points, weights);
+  if (!status)
+    return QuadricMoments();
+  const QuadricMoments m = quadric_moments(points, weights);
+  if (!m.ok)
+    status = Status::failure("the points' quadric moments are not finite");
+  return m;
+}
+
 double data_extent(const Eigen::MatrixX3d& points)
 {
   return (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();

@@ -205,6 +205,11 @@ Eigen::Vector3d minimise_over_axis(const QuadricMoments& m, const Basis& basis)
 // curved types, coplanar points (a circle in a plane is a cylinder of any height, a cone of any apex).
 Status check_direct_input(PrimitiveType type, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights);
 
+// check_direct_input, then the points' moments: the start of the cylinder and cone fits. `status` says why
+// when either fails.
+QuadricMoments checked_quadric_moments(PrimitiveType type, const Eigen::MatrixX3d& points,
+                                       const Eigen::VectorXd& weights, Status& status);
+
 double data_extent(const Eigen::MatrixX3d& points);
 
 // The FitResult of a read-off primitive: canonical conventions, orthogonal residuals over all points.
