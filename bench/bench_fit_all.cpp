@@ -10,6 +10,7 @@
 
 #include "common/pipeline/fit_all_segments.h"
 #include "median.h"
+#include "read_number.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,7 +30,9 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "usage: bench_fit_all SEGMENTED.ply [--runs N]\n");
     return 2;
   }
-  const int runs = argc == 4 ? std::max(1, std::atoi(argv[3])) : 5;
+  int runs = 5;
+  if (argc == 4 && !read_number("--runs", argv[3], 1, kMaxRuns, runs))
+    return 2;
   bracket::BMesh original;
   std::string message;
   if (!bracket::load_ply(original, argv[1], true, &message)) {

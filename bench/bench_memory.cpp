@@ -19,6 +19,7 @@
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/snap/snap_segments.h"
 #include "median.h"
+#include "read_number.h"
 
 #include <vcg/complex/complex.h>
 
@@ -136,14 +137,17 @@ int main(int argc, char** argv)
   long faces = 4000000;
   bool malformed = false;
   int runs = 3;
-  for (int i = 1; i < argc; ++i) {
+  bool ok = true;
+  for (int i = 1; i < argc && ok; ++i) {
     if (std::strcmp(argv[i], "--malformed") == 0)
       malformed = true;
     else if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
-      runs = std::max(1, std::atoi(argv[++i]));
+      ok = read_number("--runs", argv[++i], 1, kMaxRuns, runs);
     else
-      faces = std::atol(argv[i]);
+      ok = read_number("FACES", argv[i], 1L, 1000000000L, faces);
   }
+  if (!ok)
+    return 2;
   const int n = std::max(1, int(std::lround(std::sqrt(double(faces) / 12.0))));
 
   BMesh m;

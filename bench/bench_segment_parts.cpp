@@ -26,6 +26,7 @@
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "median.h"
+#include "read_number.h"
 
 #include <algorithm>
 #include <chrono>
@@ -195,30 +196,39 @@ bool parse_options(int argc, char** argv, Options& o)
   o.mesh_path = argv[1];
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
+    bool read = true;
     if (key == "--truth")
       o.truth_path = value;
     else if (key == "--runs")
-      o.runs = std::max(1, std::atoi(value.c_str()));
+      read = read_number("--runs", value.c_str(), 1, kMaxRuns, o.runs);
     else if (key == "--tolerance")
-      o.params.tolerance = std::atof(value.c_str());
+      read = read_number("--tolerance", value.c_str(), o.params.tolerance);
     else if (key == "--angle")
-      o.params.normal_angle_deg = o.normal_params.angle_deg = std::atof(value.c_str());
+      read = read_number("--angle", value.c_str(), o.params.normal_angle_deg) &&
+             read_number("--angle", value.c_str(), o.normal_params.angle_deg);
     else if (key == "--method" && (value == "growing" || value == "normal"))
       o.normal_angle = value == "normal";
     else if (key == "--smoothing")
-      o.params.smoothing_iterations = o.normal_params.smoothing_iterations = std::atoi(value.c_str());
+      read = read_number("--smoothing", value.c_str(), o.params.smoothing_iterations) &&
+             read_number("--smoothing", value.c_str(), o.normal_params.smoothing_iterations);
     else if (key == "--min-faces")
-      o.normal_params.min_segment_faces = std::atoi(value.c_str());
+      read = read_number("--min-faces", value.c_str(), o.normal_params.min_segment_faces);
     else if (key == "--threads")
-      o.threads = std::max(1, std::atoi(value.c_str()));
+      read = read_number("--threads", value.c_str(), 1, kMaxThreads, o.threads);
     else if (key == "--segmented")
       o.segmented_path = value;
     else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       return false;
     }
+    if (!read)
+      return false;
   }
-  return true;
+  const primitive_edit::Status checked = o.normal_angle ? primitive_edit::check_normal_angle_params(o.normal_params)
+                                                        : primitive_edit::check_primitive_growing_params(o.params);
+  if (!checked)
+    std::fprintf(stderr, "%s\n", checked.error.c_str());
+  return checked.ok();
 }
 
 // The segmentations of every run on every thread count, timed phase by phase.

@@ -39,6 +39,7 @@
 #include "common/pipeline/write_fits_json.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "median.h"
+#include "read_number.h"
 
 #include <algorithm>
 #include <chrono>
@@ -187,37 +188,38 @@ struct Args
 std::optional<Args> parse_args(int argc, char** argv)
 {
   Args g;
-  for (int i = 1; i < argc; ++i) {
+  bool read = true;
+  for (int i = 1; i < argc && read; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--runs" && has_value)
-      g.runs = std::max(1, std::atoi(argv[++i]));
+      read = read_number("--runs", argv[++i], 1, kMaxRuns, g.runs);
     else if (a == "--fit-runs" && has_value)
-      g.fit_runs = std::max(1, std::atoi(argv[++i]));
+      read = read_number("--fit-runs", argv[++i], 1, kMaxRuns, g.fit_runs);
     else if (a == "--tolerance" && has_value)
-      g.params.tolerance = std::atof(argv[++i]);
+      read = read_number("--tolerance", argv[++i], g.params.tolerance);
     else if (a == "--angle" && has_value)
-      g.params.normal_angle_deg = std::atof(argv[++i]);
+      read = read_number("--angle", argv[++i], g.params.normal_angle_deg);
     else if (a == "--smoothing" && has_value)
-      g.params.smoothing_iterations = std::atoi(argv[++i]);
+      read = read_number("--smoothing", argv[++i], g.params.smoothing_iterations);
     else if (a == "--fit-tolerance" && has_value)
-      g.fit_tolerance = std::atof(argv[++i]);
+      read = read_number("--fit-tolerance", argv[++i], g.fit_tolerance);
     else if (a == "--repair" && has_value)
-      g.repair = std::atoi(argv[++i]) != 0;
+      read = read_switch("--repair", argv[++i], g.repair);
     else if (a == "--prevent-flips" && has_value)
-      g.prevent_flips = std::atoi(argv[++i]) != 0;
+      read = read_switch("--prevent-flips", argv[++i], g.prevent_flips);
     else if (a == "--wide-repair" && has_value)
-      g.wide_repair = std::atoi(argv[++i]) != 0;
+      read = read_switch("--wide-repair", argv[++i], g.wide_repair);
     else if (a == "--relations" && has_value)
-      g.relations = std::atoi(argv[++i]) != 0;
+      read = read_switch("--relations", argv[++i], g.relations);
     else if (a == "--relation-angle" && has_value)
-      g.relation_options.angle_deg = std::atof(argv[++i]);
+      read = read_number("--relation-angle", argv[++i], g.relation_options.angle_deg);
     else if (a == "--relation-cost" && has_value)
-      g.relation_options.max_cost_increase = std::atof(argv[++i]);
+      read = read_number("--relation-cost", argv[++i], g.relation_options.max_cost_increase);
     else if (a == "--threads" && has_value)
-      g.params.threads = g.threads = std::atoi(argv[++i]);
+      read = read_number("--threads", argv[++i], 0, kMaxThreads, g.threads);
     else if (a == "--method" && has_value)
-      g.method = std::atoi(argv[++i]);
+      read = read_number("--method", argv[++i], 0, primitive_edit::kFitMethodCount - 1, g.method);
     else if (a == "--labels" && has_value)
       g.labels_path = argv[++i];
     else if (a == "--types" && has_value)
@@ -235,9 +237,13 @@ std::optional<Args> parse_args(int argc, char** argv)
     else
       return std::nullopt;
   }
-  if (g.scan_path.empty() || !std::isfinite(g.fit_tolerance) || g.fit_tolerance < 0 || g.method < 0 ||
-      g.method >= primitive_edit::kFitMethodCount)
+  g.params.threads = g.threads;
+  if (!read || g.scan_path.empty() || !std::isfinite(g.fit_tolerance) || g.fit_tolerance < 0)
     return std::nullopt;
+  if (const primitive_edit::Status checked = primitive_edit::check_primitive_growing_params(g.params); !checked) {
+    std::fprintf(stderr, "%s\n", checked.error.c_str());
+    return std::nullopt;
+  }
   return g;
 }
 

@@ -8,6 +8,7 @@
 //
 // Usage: make_bracket [--step FILE] [--out DIR] [--deflection MM] [--angle RAD]
 #include "bracket_mesh.h"
+#include "bench/read_number.h"
 
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/base/primitive.h"
@@ -519,11 +520,13 @@ int main(int argc, char** argv)
       step = argv[++i];
     else if (a == "--out" && has_value)
       out_dir = argv[++i];
-    else if (a == "--deflection" && has_value)
-      deflection = std::atof(argv[++i]);
-    else if (a == "--angle" && has_value)
-      angle = std::atof(argv[++i]);
-    else {
+    else if (a == "--deflection" && has_value) {
+      if (!read_number("--deflection", argv[++i], deflection))
+        return 2;
+    } else if (a == "--angle" && has_value) {
+      if (!read_number("--angle", argv[++i], angle))
+        return 2;
+    } else {
       usage();
       return 2;
     }

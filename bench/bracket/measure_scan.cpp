@@ -5,6 +5,7 @@
 //
 // Usage: measure_scan MESH.ply REFERENCE.ply [--samples N] [--tolerance MM] [--seed N]
 #include "bracket_mesh.h"
+#include "bench/read_number.h"
 
 #include "common/measure/measure_accuracy.h"
 #include "common/mesh/sample_surface_uniform.h"
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 int main(int argc, char** argv)
@@ -21,17 +23,17 @@ int main(int argc, char** argv)
   std::string mesh_path, reference_path;
   long samples = 1000000;
   double tolerance = 0.42;
-  std::uint64_t seed = 1;
+  long long seed = 1;
   bool ok = true;
   for (int i = 1; i < argc && ok; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--samples" && has_value)
-      samples = std::atol(argv[++i]);
+      ok = read_number("--samples", argv[++i], samples);
     else if (a == "--tolerance" && has_value)
-      tolerance = std::atof(argv[++i]);
+      ok = read_number("--tolerance", argv[++i], tolerance);
     else if (a == "--seed" && has_value)
-      seed = std::strtoull(argv[++i], nullptr, 10);
+      ok = read_number("--seed", argv[++i], 0LL, std::numeric_limits<long long>::max(), seed);
     else if (a.rfind("--", 0) != 0 && mesh_path.empty())
       mesh_path = a;
     else if (a.rfind("--", 0) != 0 && reference_path.empty())
@@ -53,7 +55,7 @@ int main(int argc, char** argv)
   }
   const auto t0 = std::chrono::steady_clock::now();
   Eigen::MatrixX3d points;
-  if (const primitive_edit::Status s = primitive_edit::sample_surface_uniform(mesh, samples, seed, &points); !s) {
+  if (const primitive_edit::Status s = primitive_edit::sample_surface_uniform(mesh, samples, std::uint64_t(seed), &points); !s) {
     std::fprintf(stderr, "measure_scan: %s: %s\n", mesh_path.c_str(), s.error.c_str());
     return 1;
   }

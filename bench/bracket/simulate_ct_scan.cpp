@@ -21,6 +21,7 @@
 //        [--preset paper|paper-fine|paper-bias] [--voxel MM] [--blur MM] [--noise GREY] [--threshold GREY]
 //        [--roughness MM] [--roughness-length MM] [--roughness-kind space|normal] [--supersample S] [--seed N]
 #include "bracket_mesh.h"
+#include "bench/read_number.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/closest.h>
@@ -610,25 +611,31 @@ bool parse(int argc, char** argv, Settings& s)
       else
         return false;
     }
+  long long seed = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (i + 1 >= argc)
       return false;
     const char* v = argv[++i];
+    bool read = true;
     if (a == "--in") s.in = v;
     else if (a == "--out") s.out = v;
     else if (a == "--truth") s.truth = v;
-    else if (a == "--voxel") s.voxel = std::atof(v);
-    else if (a == "--blur") s.blur = std::atof(v);
-    else if (a == "--noise") s.noise = std::atof(v);
-    else if (a == "--threshold") s.threshold = std::atof(v);
-    else if (a == "--roughness") s.roughness = std::atof(v);
-    else if (a == "--roughness-length") s.roughness_length = std::atof(v);
+    else if (a == "--voxel") read = read_number("--voxel", v, s.voxel);
+    else if (a == "--blur") read = read_number("--blur", v, s.blur);
+    else if (a == "--noise") read = read_number("--noise", v, s.noise);
+    else if (a == "--threshold") read = read_number("--threshold", v, s.threshold);
+    else if (a == "--roughness") read = read_number("--roughness", v, s.roughness);
+    else if (a == "--roughness-length") read = read_number("--roughness-length", v, s.roughness_length);
     else if (a == "--roughness-kind" && (std::string(v) == "space" || std::string(v) == "normal"))
       s.roughness_along_normal = std::string(v) == "normal";
-    else if (a == "--supersample") s.supersample = std::atoi(v);
-    else if (a == "--seed") s.seed = std::strtoull(v, nullptr, 10);
-    else if (a != "--preset") return false;
+    else if (a == "--supersample") read = read_number("--supersample", v, s.supersample);
+    else if (a == "--seed") {
+      read = read_number("--seed", v, 0LL, std::numeric_limits<long long>::max(), seed);
+      s.seed = std::uint64_t(seed);
+    } else if (a != "--preset") return false;
+    if (!read)
+      return false;
   }
   const bool finite = std::isfinite(s.voxel) && std::isfinite(s.blur) && std::isfinite(s.noise) &&
                       std::isfinite(s.threshold) && std::isfinite(s.roughness) && std::isfinite(s.roughness_length);
