@@ -2,6 +2,14 @@
 
 namespace primitive_edit {
 
+namespace {
+
+// Radius of the start on nearly flat points, in units of their extent: the circle bulges extent / 8e6 off
+// its chord, flatter than any scan, and the refinement takes it from there.
+constexpr double kFlatStartRadius = 1e6;
+
+} // namespace
+
 FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& normals,
                        const Eigen::VectorXd& weights, const FitOptions& options)
 {
@@ -20,13 +28,25 @@ FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& n
   std::vector<Primitive> starts;
   for (const Eigen::Vector3d& d : directions) {
     const AxisCircle c = fit_circle_around_axis(s.points, s.weights, d);
-    if (!c.ok)
-      continue;
     Primitive p;
     p.type = PrimitiveType::Cylinder;
-    p.origin = c.centre;
     p.axis = d;
-    p.radius = c.radius;
+    if (c.ok) {
+      p.origin = c.centre;
+      p.radius = c.radius;
+      starts.push_back(p);
+      continue;
+    }
+    // Seen along d the points are a line: a plane, or nearly one. The cylinder that fits them is the one of
+    // huge radius lying on that plane (which the callers then find implausibly large), not one about another
+    // direction (a flat top with a hole took the cylinder about its normal through the hole: RMS 2.1, against
+    // 1e-7 for the huge one).
+    const Eigen::Vector3d flat_normal = pca.axes.col(0) - pca.axes.col(0).dot(d) * d;
+    const double extent = std::sqrt(std::max(0.0, pca.eigenvalues.maxCoeff()));
+    if (!pca.ok || !(flat_normal.norm() > 0.5) || !(extent > 0))
+      continue;
+    p.radius = kFlatStartRadius * extent;
+    p.origin = pca.centroid + p.radius * flat_normal.normalized();
     starts.push_back(p);
   }
   out = refine_best_start(starts, points, weights, s, options);
