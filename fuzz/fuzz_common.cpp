@@ -36,6 +36,7 @@
 #include "common/fit/fit_quadric_direct.h"
 #include "common/pipeline/fit_all_segments.h"
 #include "common/pipeline/fit_segment.h"
+#include "common/pipeline/primitive_edit_session.h"
 #include "common/pipeline/snap_onto_primitive.h"
 #include "common/pipeline/write_fits_json.h"
 #include "common/snap/snap_segments.h"
@@ -484,6 +485,44 @@ void check_accuracy(Decoder& in, const MeshType& m, const Params& params)
   }
 }
 
+// The edit tool's fit of one or two picked segments, alone or with the relations to the others (Fit All on the
+// picks joined): it moves no vertex and changes no segment id; a fit with ok == true gives a valid primitive with
+// finite residuals, and relations are either held (listed) or refused with a reason, never both.
+template <class MeshType>
+void check_edit_fit(Decoder& in, MeshType& m, const std::vector<int>& seg, int K, const Params& params)
+{
+  // Runs unless a byte says not: at the end of the decoding, most inputs have run out of bytes (then 0).
+  if (K < 1 || K > kMaxFittedSegments || m.face.empty() || in.bit())
+    return;
+  write_segment_ids(m, seg);
+  std::vector<typename MeshType::CoordType> before(m.vert.size());
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    before[v] = m.vert[v].cP();
+  PrimitiveEditSession<MeshType> session;
+  if (!session.attach(m).status.ok())
+    return;
+  const std::vector<int> ids = session.segment_of_face();
+  session.pick(int(in.u16() % m.face.size()), false);
+  if (in.bit())
+    session.pick(int(in.u16() % m.face.size()), true);
+  const std::optional<PrimitiveType> type =
+      in.bit() ? std::optional<PrimitiveType>(static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount)) : std::nullopt;
+  const FitResult fit = session.fit(type, params.fit.method, !in.bit());
+  if (fit.status.ok()) {
+    FUZZ_CHECK(primitive_is_valid(fit.primitive) && std::isfinite(fit.rms) && std::isfinite(fit.max_residual));
+    FUZZ_CHECK(session.edited().has_value());
+  } else {
+    FUZZ_CHECK(!fit.status.error.empty() && !session.edited());
+  }
+  FUZZ_CHECK(session.fit_relations().empty() || session.relations_refused().empty());
+  for (const std::string& line : session.fit_relations())
+    FUZZ_CHECK(!line.empty());
+  FUZZ_CHECK(session.segment_of_face() == ids);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    FUZZ_CHECK(m.vert[v].cP() == before[v] || !(m.vert[v].cP() == m.vert[v].cP()));  // NaN != NaN
+  session.detach();
+}
+
 template <class MeshType>
 void run(Decoder& in)
 {
@@ -519,6 +558,7 @@ void run(Decoder& in)
   check_fit_all(in, m, seg, K, params);
   check_snap(in, m, seg, K, params, std::move(prim_of_segment));
   check_accuracy(in, m, params);
+  check_edit_fit(in, m, seg, K, params);
 }
 
 } // namespace

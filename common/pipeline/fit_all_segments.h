@@ -4,7 +4,8 @@
 // Input:  a vcg triangle mesh, its segment ids (index = vcg::tri::Index(m, face), -1 = none) and
 //         FitAllSegmentsOptions: the RMS tolerance (0: automatic from the scan's roughness, see
 //         fit_primitive_auto.h), optional types per segment (fitted as given instead of the automatic type),
-//         whether to snap and how (SnapOptions), the threads (fit_segments.h), and a Progress.
+//         whether to snap and how (SnapOptions), the threads (fit_segments.h), the scan's roughness if the caller
+//         knows it, and a Progress.
 // Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
 //         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
 //         where free-form); with relations on, the relations kept (a segment refitted about a cylinder's axis
@@ -16,8 +17,8 @@
 //         against them, and normals and bounding box are updated.
 //         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
 //         or not finite, or relate_primitives refuses its input (bad relation options).
-// Method: surface_roughness (kept on the mesh by the segmentation, else estimated; automatic tolerance or
-//         relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
+// Method: surface_roughness (options.roughness, or kept on the mesh by the segmentation, else estimated;
+//         automatic tolerance or relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
 //         segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends (with the same
 //         contacts), snap_segments (its fold repair on options.threads too).
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
@@ -55,6 +56,9 @@ struct FitAllSegmentsOptions
   bool snap = false;
   SnapOptions snap_options = fitted_snap_options();
   int threads = 0;  // <= 0: all hardware threads
+  // The scan's roughness when the caller has measured it (the edit session, before its applies moved vertices
+  // onto primitives); unset: kept on the mesh or estimated (surface_roughness_attribute.h).
+  std::optional<double> roughness;
 };
 
 struct FitAllSegmentsResult
@@ -114,7 +118,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   fit_options.tolerance = options.tolerance;
   fit_options.fit = options.fit;
   if (options.tolerance == 0 || options.relations)
-    out.roughness = surface_roughness(m);
+    out.roughness = options.roughness ? *options.roughness : surface_roughness(m);
   if (options.tolerance == 0)
     fit_options.roughness = out.roughness;
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count, options.threads);

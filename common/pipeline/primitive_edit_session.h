@@ -5,13 +5,15 @@
 // undo stack. Every step calls common/ as the filters do: segment_by_primitive_growing or
 // segment_by_normal_angle, merge_segments, split_segments_by_plane (with plane_from_screen_line, cutting only
 // within the stroke), fit_segment on gather_segment_samples (the automatic type within the scan's roughness)
-// and snap_onto_primitive. Each undoable step (auto segmentation, merge, split, apply) stores a snapshot:
+// or, with relations, fit_all_segments (the picked segments as one among all others, without snapping), and
+// snap_onto_primitive. Each undoable step (auto segmentation, merge, split, apply) stores a snapshot:
 // the segment ids, the recorded primitives, the picked segments and the old positions of the vertices it
 // moved; undo() restores the latest one, up to kMaxUndo steps back, and the state the session started on is
 // always the last (a segmentation that changes nothing is not a step). An apply that would move vertices
 // farther than the segment is large waits for a confirmation (apply's `confirmed`).
 // Merge and split keep the recorded primitive of every segment they leave whole (under its new id).
-// Cost: attach, merge, split and undo O(F + V); fit and apply those of the fit and of snap_segments.
+// Cost: attach, merge, split and undo O(F + V); fit and apply those of the fit (with relations: of every
+//       segment's fit and the relations', as Fit All without snapping) and of snap_segments.
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_SESSION_H
 
@@ -28,6 +30,8 @@
 #include "common/mesh/segment_attribute.h"
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/mesh/update_normals_and_bounds.h"
+#include "common/relate/describe_relation.h"
+#include "common/pipeline/fit_all_segments.h"
 #include "common/pipeline/fit_segment.h"
 #include "common/pipeline/snap_onto_primitive.h"
 #include "common/segment/merge_segments.h"
@@ -267,9 +271,15 @@ public:
   }
 
   // Fits a primitive of the given type (std::nullopt: the type that explains the points best) to the union
-  // of the picked segments, starting as `method` says (fit_result.h). On success the fit also becomes the
-  // edited primitive.
-  FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined)
+  // of the picked segments, starting as `method` says (fit_result.h). With `relations`, when other segments
+  // exist, the picked segments are fitted as one segment among all of them, as Primitive: Fit All Segments
+  // does without snapping (fit_all_segments.h): the primitive then keeps the directions, axes and radii it
+  // shares with the rest of the part, and fit_relations() describes those relations in the session's ids (a
+  // segment alone, or one that shares nothing within tolerance, gets its own fit). The relations' fit is taken
+  // while its RMS is within sqrt(1 + 2 RelationCost) of the picked segments' own fit, as Fit All's check allows
+  // any segment; beyond, the own fit is kept and relations_refused() says why. On success the fit also
+  // becomes the edited primitive.
+  FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined, bool relations = false)
   {
     clear_fit();
     FitResult out;
@@ -287,6 +297,22 @@ public:
     if (!type)  // as the filters: a segment of a rough scan is a primitive within the scan's roughness
       options.roughness = roughness();
     out = fit_segment(samples, type, options);
+    if (relations && segment_count() > int(picked_.size())) {
+      // Fit All checks each relation against the fit it started from, which, for a type forced on segments it
+      // does not suit, may itself be far off (a cylinder forced on a flat top, then tied to the hole's axis: RMS
+      // 2.1 where the segment's own cylinder has 0.006). The relations may cost the picked segments what they
+      // may cost any segment there, measured against their own fit here.
+      const FitResult held = fit_among_all(type, method);
+      const double allowed = std::sqrt(1 + 2 * RelationOptions().max_cost_increase) * out.rms;
+      if (held.status && (!out.status || held.rms <= allowed)) {
+        out = held;
+      } else if (held.status) {
+        char text[160];
+        std::snprintf(text, sizeof text, "they would raise the RMS to %.4g from %.4g alone", held.rms, out.rms);
+        fit_relations_.clear();
+        relations_refused_ = text;
+      }
+    }
     if (!out.status)
       out.status = Status::failure("the picked segments " +
                                    std::string(type ? "cannot be fitted: " : "fit no primitive: ") + out.status.error);
@@ -299,6 +325,11 @@ public:
     return out;
   }
   const std::optional<FitResult>& last_fit() const { return fit_; }
+  // The relations the last fit holds with other segments, one line each (describe_relation.h); empty without.
+  const std::vector<std::string>& fit_relations() const { return fit_relations_; }
+  // Why the last fit holds no relations although they were asked for ("they would raise the RMS to ... from ...
+  // alone"); empty otherwise.
+  const std::string& relations_refused() const { return relations_refused_; }
   // A warning when the last fit is far larger than the picked segments (implausible_size), else empty.
   std::string fit_warning() const
   {
@@ -477,6 +508,8 @@ private:
     edited_.reset();
     edited_rms_ = 0;
     fit_points_.resize(0, 3);
+    fit_relations_.clear();
+    relations_refused_.clear();
   }
 
   int first_face_of(int segment) const
@@ -485,6 +518,46 @@ private:
       if (labels_[f] == segment)
         return int(f);
     return -1;
+  }
+
+  // The picked segments fitted as one among all segments, with the relations Fit All finds (fit); their
+  // relations, in the session's ids, go to fit_relations_.
+  FitResult fit_among_all(std::optional<PrimitiveType> type, FitMethod method)
+  {
+    std::vector<int> labels = labels_;
+    const int face = first_face_of(picked_.front());
+    const int count = merge_segments(labels, picked_);
+    const int joined = labels[std::size_t(face)];
+    std::vector<int> session_id(std::size_t(count), -1);
+    for (std::size_t f = 0; f < labels.size(); ++f)
+      if (labels[f] >= 0)
+        session_id[std::size_t(labels[f])] = labels_[f];
+    session_id[std::size_t(joined)] = picked_.front();
+    FitAllSegmentsOptions options;
+    options.types.assign(std::size_t(count), std::nullopt);
+    options.types[std::size_t(joined)] = type;
+    options.fit.method = method;
+    options.roughness = roughness();
+    const FitAllSegmentsResult all = fit_all_segments(*mesh_, labels, options);
+    if (!all.status) {
+      FitResult failed;
+      failed.status = all.status;
+      return failed;
+    }
+    FitResult out = all.fits[std::size_t(joined)];
+    if (!out.status)
+      return out;
+    out.primitive = *all.primitives[std::size_t(joined)];
+    std::vector<std::optional<Primitive>> by_session(static_cast<std::size_t>(segment_count()));
+    for (int s = 0; s < count; ++s)
+      by_session[std::size_t(session_id[std::size_t(s)])] = all.primitives[std::size_t(s)];
+    for (Relation r : all.relations)
+      if (r.a == joined || r.b == joined) {
+        r.a = session_id[std::size_t(r.a)];
+        r.b = session_id[std::size_t(r.b)];
+        fit_relations_.push_back(describe_relation(r, by_session));
+      }
+    return out;
   }
 
   SegmentSamples picked_samples() const
@@ -572,6 +645,8 @@ private:
   double edited_rms_ = 0;
   std::deque<Snapshot> undo_;
   std::optional<double> roughness_;
+  std::vector<std::string> fit_relations_;
+  std::string relations_refused_;
 };
 
 } // namespace primitive_edit

@@ -7,6 +7,7 @@
 #include "test_mesh.h"
 
 #include "meshlab_test_mesh.h"
+#include "plate_with_hole.h"
 
 #include <gtest/gtest.h>
 
@@ -523,6 +524,62 @@ TYPED_TEST(EditSessionTest, ApplyOfAPrimitiveFarLargerThanTheSegmentWaitsForConf
   for (std::size_t v = 0; v < m.vert.size(); ++v)
     ASSERT_EQ(m.vert[v].cP(), before[v]);
   EXPECT_TRUE(s.apply(true, true).status.ok());
+}
+
+// With relations the picked face is fitted among all the segments, as Fit All does: on a noisy plate the side
+// faces +x and -x come out parallel and square to the top (to the joint refit's convergence), which their own
+// fits, tilted by the noise, are not;
+// the relations are listed in the session's ids. Without relations the fit is the segment's own, as before.
+TEST(EditSessionRelations, FitHoldsTheRelationsOfThePickedFace)
+{
+  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(0.1, 5);
+  test_mesh::TMesh m;
+  plate_fixture::build_mesh(m, plate.soup);
+  write_segment_ids(m, plate.soup.labels);
+  PrimitiveEditSession<test_mesh::TMesh> s;
+  ASSERT_TRUE(s.attach(m).status.ok());
+  ASSERT_EQ(s.segment_count(), 7);
+  const int top = 0, plus_x = 3, minus_x = 5;
+  auto fit_plane = [&](int segment, bool relations) {
+    const auto face = std::find(plate.soup.labels.begin(), plate.soup.labels.end(), segment);
+    EXPECT_TRUE(s.pick(int(face - plate.soup.labels.begin()), false));
+    const FitResult fit = s.fit(PrimitiveType::Plane, FitMethod::Refined, relations);
+    EXPECT_TRUE(fit.status.ok()) << fit.status.error;
+    EXPECT_TRUE(s.edited() && s.edited()->axis == fit.primitive.axis && s.edited()->origin == fit.primitive.origin);
+    return fit.primitive;
+  };
+  auto angle = [](const Primitive& a, const Primitive& b) {
+    return std::acos(std::min(1.0, std::abs(a.axis.dot(b.axis))));
+  };
+
+  const Primitive own_plus = fit_plane(plus_x, false);
+  EXPECT_TRUE(s.fit_relations().empty());
+  const Primitive own_minus = fit_plane(minus_x, false);
+  const Primitive own_top = fit_plane(top, false);
+  const Primitive held_top = fit_plane(top, true);
+  const Primitive held_minus = fit_plane(minus_x, true);
+  const Primitive held_plus = fit_plane(plus_x, true);
+  std::printf("sides: %.4f degrees apart alone, %.2g with relations; +x and top %.4f off square alone, %.2g with\n",
+              degrees_from_radians(angle(own_plus, own_minus)), degrees_from_radians(angle(held_plus, held_minus)),
+              90 - degrees_from_radians(angle(own_plus, own_top)), 90 - degrees_from_radians(angle(held_plus, held_top)));
+  EXPECT_GT(angle(own_plus, own_minus), radians_from_degrees(0.05));
+  EXPECT_LT(angle(held_plus, held_minus), 1e-9);
+  EXPECT_GT(std::abs(own_plus.axis.dot(own_top.axis)), std::sin(radians_from_degrees(0.05)));
+  EXPECT_LT(std::abs(held_plus.axis.dot(held_top.axis)), 1e-4);  // through the -x side's relation to the bottom
+  EXPECT_NEAR(held_plus.origin.dot(held_plus.axis.normalized()) * (held_plus.axis.x() < 0 ? -1 : 1), plate.half,
+              0.05);
+  const std::vector<std::string>& relations = s.fit_relations();
+  for (const std::string& line : relations)
+    std::printf("  %s\n", line.c_str());
+  EXPECT_EQ(std::count(relations.begin(), relations.end(), "parallel: segments 5 and 3") +
+                std::count(relations.begin(), relations.end(), "parallel: segments 3 and 5"),
+            1);
+
+  // The mesh and the segments are untouched by the fits.
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    ASSERT_EQ(m.vert[v].cP(), test_mesh::TMesh::CoordType(plate.soup.points[v].x(), plate.soup.points[v].y(),
+                                                          plate.soup.points[v].z()));
+  EXPECT_EQ(s.segment_of_face(), plate.soup.labels);
 }
 
 } // namespace
