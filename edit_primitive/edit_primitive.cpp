@@ -305,16 +305,26 @@ void EditPrimitivePlugin::split(const Eigen::Vector2d& a, const Eigen::Vector2d&
 void EditPrimitivePlugin::fit()
 {
   const std::optional<PrimitiveType> type = panel_->type();
-  const FitResult result = session_.fit(type, panel_->method());
-  const QString what = QString("fit %1 to %2 (%3)")
-                           .arg(type ? primitive_type_name(*type) : "Auto", pickedText(), fit_method_name(panel_->method()));
-  if (result.status.ok())
-    report(true, what,
-           describe_primitive(result.primitive) + "; RMS " + QString::number(result.rms, 'g', 4).toStdString() +
-               ", max residual " + QString::number(result.max_residual, 'g', 4).toStdString() + ", " +
-               std::to_string(result.point_count) + " points");
-  else
+  const bool relations = panel_->relations();
+  QApplication::setOverrideCursor(Qt::WaitCursor);  // with relations every segment is fitted: 0.4 s at 1M faces
+  const FitResult result = session_.fit(type, panel_->method(), relations);
+  QApplication::restoreOverrideCursor();
+  const QString what = QString("fit %1 to %2 (%3%4)")
+                           .arg(type ? primitive_type_name(*type) : "Auto", pickedText(),
+                                fit_method_name(panel_->method()), relations ? ", with relations" : "");
+  if (result.status.ok()) {
+    std::string message = describe_primitive(result.primitive) + "; RMS " +
+                          QString::number(result.rms, 'g', 4).toStdString() + ", max residual " +
+                          QString::number(result.max_residual, 'g', 4).toStdString() + ", " +
+                          std::to_string(result.point_count) + " points";
+    for (std::size_t i = 0; i < session_.fit_relations().size(); ++i)
+      message += (i == 0 ? "; relations held: " : "; ") + session_.fit_relations()[i];
+    if (!session_.relations_refused().empty())
+      message += "; relations not held: " + session_.relations_refused();
+    report(true, what, message);
+  } else {
     report(false, what, result.status.error);
+  }
   if (const std::string warning = session_.fit_warning(); !warning.empty())
     report(false, what, warning);
   if (result.status.ok() && !type)

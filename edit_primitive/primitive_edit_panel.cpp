@@ -5,6 +5,7 @@
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -121,6 +122,14 @@ QGroupBox* PrimitiveEditPanel::buildPrimitiveGroup()
                           "as the paper does; exact on exact data, biased by noise. Direct, refined: that fit "
                           "refined. A torus always takes the refined starts.");
   fields_->addRow("Method", fit_method_);
+  relations_ = new QCheckBox("Relations", primitive);
+  relations_->setChecked(true);
+  relations_->setToolTip("Fit the picked segments together with all the others, as Primitive: Fit All Segments "
+                         "does: directions parallel, perpendicular or at 45 degrees, coaxial and concentric "
+                         "features, equal radii and fillets tangent to their faces hold where the scan allows, "
+                         "so a face comes out square to the part instead of tilted by the roughness. The log "
+                         "lists the relations. Off: the picked segments are fitted alone.");
+  fields_->addRow(relations_);
   radius_ = addField("Radius");
   minor_ = addField("Minor radius");
   half_angle_ = addField("Half-angle (°)");
@@ -206,6 +215,11 @@ std::optional<PrimitiveType> PrimitiveEditPanel::type() const
 primitive_edit::FitMethod PrimitiveEditPanel::method() const
 {
   return primitive_edit::FitMethod(fit_method_->currentIndex());
+}
+
+bool PrimitiveEditPanel::relations() const
+{
+  return relations_->isChecked();
 }
 
 void PrimitiveEditPanel::setType(std::optional<PrimitiveType> type)

@@ -1,7 +1,7 @@
 // primitive_edit_panel.h: the Primitive Edit tool's dock panel, plain Qt widgets: automatic segmentation
 // (by primitive fit for scans, or by normal angle, with the filters' defaults), the picked segments with
-// Merge, the primitive type with Fit, the fitted parameters as editable fields with the RMS residual, Apply
-// and Undo. Its width is fixed (long status lines wrap), so the view beside it never moves. Fields take what
+// Merge, the primitive type with Fit (holding the relations with the other segments, or alone), the fitted
+// parameters as editable fields with the RMS residual, Apply and Undo. Its width is fixed (long status lines wrap), so the view beside it never moves. Fields take what
 // users type (scientific notation, signs) and hold the exact value until the user changes the text. It
 // only shows values and emits requests; the edit plugin does the work.
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
@@ -36,6 +36,8 @@ public:
   std::optional<primitive_edit::PrimitiveType> type() const;
   // How the fit starts (Refined starts, the paper's direct fit, or it refined).
   primitive_edit::FitMethod method() const;
+  // Whether the fit holds the relations with the other segments (as Fit All) or fits the picked ones alone.
+  bool relations() const;
   void setType(std::optional<primitive_edit::PrimitiveType> type);
 
   void setSegmentInfo(int segment_count, const QString& picked);
@@ -76,6 +78,7 @@ private:
   QLabel* picked_ = nullptr;
   QComboBox* type_ = nullptr;
   QComboBox* fit_method_ = nullptr;
+  class QCheckBox* relations_ = nullptr;
   QLineEdit* radius_ = nullptr;
   QLineEdit* minor_ = nullptr;
   QLineEdit* half_angle_ = nullptr;

@@ -266,18 +266,23 @@ def mesh_box(before, after):
     return c0 * step, r0 * step, c1 * step, r1 * step
 
 
-def panel_right(shot, y=975):
-    """The right edge of the tool's panel (docked on the left) on row y, below its widgets: walking right from
-    the window's left border, the first column whose colour differs from the panel's background."""
+def panel_right(shot, rows=range(940, 986)):
+    """The right edge of the tool's panel (docked on the left) near its foot: on each row, walking right from the
+    window's left border, the first column whose colour differs from the panel's background; the largest over the
+    rows, as the status text at the panel's foot, which grows with the last log line, crosses some of them but
+    not the gaps between its lines."""
     w, h, data = shot
     size = len(data) // (w * h * 3)  # bytes per sample: import writes 8 or 16 bit PPM
 
-    def rgb(px):
+    def rgb(px, y):
         i = size * 3 * (y * w + px)
         return data[i], data[i + size], data[i + 2 * size]
 
-    x = 3
-    background = rgb(x)
-    while x + 1 < w and sum(abs(a - b) for a, b in zip(rgb(x + 1), background)) < 30:
-        x += 1
-    return x
+    def edge(y):
+        x = 3
+        background = rgb(x, y)
+        while x + 1 < w and sum(abs(a - b) for a, b in zip(rgb(x + 1, y), background)) < 30:
+            x += 1
+        return x
+
+    return max(edge(y) for y in rows)

@@ -8,7 +8,8 @@ into its seven true surfaces. Then:
 
 1. Widening the hole (point 5): the hole wall is picked by a click (seen at an angle in MeshLab's perspective
    view from above: candidate points inside the top rim are clicked until the picked segment has the wall's
-   face count), a cylinder fitted (3, F), its radius set to 7 (R, typing, Return) and applied (Enter). The
+   face count), a cylinder fitted (3, F; with the panel's default Relations, its axis held parallel to the
+   box's faces, as the log must say), its radius set to 7 (R, typing, Return) and applied (Enter). The
    exported mesh must have every wall vertex at the new radius, the rims at the top and bottom heights, the
    box's outer border unmoved, no top, bottom or wall triangle flipped, and the apply must hold no vertex back
    (the fold repair slides the top's and bottom's small faces near the rim outwards instead).
@@ -297,6 +298,13 @@ def check_log(path, steps):
     if steps is WIDEN_STEPS:
         edited = [l for l in lines if "edited primitive: Cylinder" in l]
         check(any("radius %g" % NEW_RADIUS in l for l in edited), "log: radius set to %g" % NEW_RADIUS)
+    if "cylinder fitted to the wall" in found_at:
+        # The panel's Relations box is checked by default: the wall is fitted among the box's faces, its axis
+        # parallel to the top's and bottom's normals.
+        fit_line = lines[found_at["cylinder fitted to the wall"]]
+        check("with relations" in fit_line and "relations held: parallel: segments" in fit_line,
+              "log: the wall is fitted with relations, its axis held parallel to the box's faces (%s)"
+              % fit_line[fit_line.find("relations held"):][:80])
     if "widening applied" in found_at:
         line = lines[found_at["widening applied"]]
         held = re.search(r"(\d+) held back", line)
