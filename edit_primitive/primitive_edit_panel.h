@@ -1,9 +1,10 @@
 // primitive_edit_panel.h: the Primitive Edit tool's dock panel, plain Qt widgets: automatic segmentation
 // (by primitive fit for scans, or by normal angle, with the filters' defaults), the picked segments with
 // Merge, the primitive type with Fit (holding the relations with the other segments, or alone), the fitted
-// parameters as editable fields with the RMS residual, Apply and Undo. Its width is fixed (long status lines wrap), so the view beside it never moves. Fields take what
-// users type (scientific notation, signs) and hold the exact value until the user changes the text. It
-// only shows values and emits requests; the edit plugin does the work.
+// parameters as editable fields with the RMS residual, Apply and Undo. Its width is fixed (long status lines
+// wrap), so the view beside it never moves. Fields take what users type (scientific notation, signs) and hold
+// the exact value until the user changes the text. It only shows values and emits requests; the edit plugin
+// does the work.
 #ifndef PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
 #define PRIMITIVE_EDIT_PRIMITIVE_EDIT_PANEL_H
 

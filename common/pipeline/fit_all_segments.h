@@ -18,9 +18,9 @@
 //         A failed status, with the mesh untouched, when there are no segments, the tolerance is negative
 //         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (options.roughness, or kept on the mesh by the segmentation, else estimated;
-//         automatic tolerance or relations), gather_segment_samples, fit_segments and relate_primitives (both on options.threads;
-//         segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends (with the same
-//         contacts), snap_segments (its fold repair on options.threads too).
+//         automatic tolerance or relations), gather_segment_samples, fit_segments and relate_primitives (both
+//         on options.threads; segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends
+//         (with the same contacts), snap_segments (its fold repair on options.threads too).
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H

@@ -275,10 +275,10 @@ public:
   // exist, the picked segments are fitted as one segment among all of them, as Primitive: Fit All Segments
   // does without snapping (fit_all_segments.h): the primitive then keeps the directions, axes and radii it
   // shares with the rest of the part, and fit_relations() describes those relations in the session's ids (a
-  // segment alone, or one that shares nothing within tolerance, gets its own fit). The relations' fit is taken
-  // while its RMS is within sqrt(1 + 2 RelationCost) of the picked segments' own fit, as Fit All's check allows
-  // any segment; beyond, the own fit is kept and relations_refused() says why. On success the fit also
-  // becomes the edited primitive.
+  // segment alone gets its own fit, one that shares nothing within tolerance Fit All's fit). The relations'
+  // fit is taken while its RMS is within sqrt(1 + 2 RelationCost) of the picked segments' own fit, as Fit All's
+  // check allows any segment; beyond, or when it fails, the own fit is kept and relations_refused() says why.
+  // On success the fit also becomes the edited primitive.
   FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined, bool relations = false)
   {
     clear_fit();
@@ -298,10 +298,10 @@ public:
       options.roughness = roughness();
     out = fit_segment(samples, type, options);
     if (relations && segment_count() > int(picked_.size())) {
-      // Fit All checks each relation against the fit it started from, which, for a type forced on segments it
-      // does not suit, may itself be far off (a cylinder forced on a flat top, then tied to the hole's axis: RMS
-      // 2.1 where the segment's own cylinder has 0.006). The relations may cost the picked segments what they
-      // may cost any segment there, measured against their own fit here.
+      // Fit All checks each relation against its own fit of a segment, on the segment's vertices; the fit the
+      // user gets without relations is the one on the picked faces, which can differ where a type is forced on
+      // data it does not suit. The relations may cost the picked segments what Fit All lets them cost any
+      // segment, measured against that fit.
       const FitResult held = fit_among_all(type, method);
       const double allowed = std::sqrt(1 + 2 * RelationOptions().max_cost_increase) * out.rms;
       if (held.status && (!out.status || held.rms <= allowed)) {
@@ -311,6 +311,8 @@ public:
         std::snprintf(text, sizeof text, "they would raise the RMS to %.4g from %.4g alone", held.rms, out.rms);
         fit_relations_.clear();
         relations_refused_ = text;
+      } else if (out.status) {
+        relations_refused_ = "the fit among all segments failed: " + held.status.error;
       }
     }
     if (!out.status)

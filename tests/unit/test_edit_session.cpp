@@ -561,7 +561,8 @@ TEST(EditSessionRelations, FitHoldsTheRelationsOfThePickedFace)
   const Primitive held_plus = fit_plane(plus_x, true);
   std::printf("sides: %.4f degrees apart alone, %.2g with relations; +x and top %.4f off square alone, %.2g with\n",
               degrees_from_radians(angle(own_plus, own_minus)), degrees_from_radians(angle(held_plus, held_minus)),
-              90 - degrees_from_radians(angle(own_plus, own_top)), 90 - degrees_from_radians(angle(held_plus, held_top)));
+              90 - degrees_from_radians(angle(own_plus, own_top)),
+              90 - degrees_from_radians(angle(held_plus, held_top)));
   EXPECT_GT(angle(own_plus, own_minus), radians_from_degrees(0.05));
   EXPECT_LT(angle(held_plus, held_minus), 1e-9);
   EXPECT_GT(std::abs(own_plus.axis.dot(own_top.axis)), std::sin(radians_from_degrees(0.05)));
