@@ -276,8 +276,8 @@ public:
   // does without snapping (fit_all_segments.h): the primitive then keeps the directions, axes and radii it
   // shares with the rest of the part, and fit_relations() describes those relations in the session's ids (a
   // segment alone gets its own fit, one that shares nothing within tolerance Fit All's fit). The relations'
-  // fit is taken while its RMS is within sqrt(1 + 2 RelationCost) of the picked segments' own fit, as Fit All's
-  // check allows any segment; beyond, or when it fails, the own fit is kept and relations_refused() says why.
+  // fit is taken while its RMS is within sqrt(checked_cost_factor) (1.73 at the default RelationCost) of the
+  // picked segments' own fit, as Fit All's check allows any segment; beyond, or when it fails, the own fit is kept and relations_refused() says why.
   // On success the fit also becomes the edited primitive.
   FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined, bool relations = false)
   {
@@ -303,7 +303,7 @@ public:
       // data it does not suit. The relations may cost the picked segments what Fit All lets them cost any
       // segment, measured against that fit.
       const FitResult held = fit_among_all(type, method);
-      const double allowed = std::sqrt(1 + 2 * RelationOptions().max_cost_increase) * out.rms;
+      const double allowed = std::sqrt(checked_cost_factor(RelationOptions().max_cost_increase)) * out.rms;
       if (held.status && (!out.status || held.rms <= allowed)) {
         out = held;
       } else if (held.status) {

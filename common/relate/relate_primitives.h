@@ -57,6 +57,10 @@ struct RelationOptions
   double max_cost_increase = 1.0;
 };
 
+// The check after the joint refit: a segment's cost may reach this factor of its own fit's, twice the share a
+// relation may ask at detection (several relations add up). The edit tool holds a picked face to it too.
+inline double checked_cost_factor(double max_cost_increase) { return 1 + 2 * max_cost_increase; }
+
 struct RelatedPrimitives
 {
   Status status;
@@ -75,7 +79,7 @@ namespace relate_detail {
 // the segment's own fit at p.
 RelatedSegment related_segment(const Primitive& p, const SegmentSamples& s, Eigen::Index count);
 
-// The segment whose cost after the refit most exceeds (1 + 2 max_cost_increase) of its own fit's, -1: none.
+// The segment whose cost after the refit most exceeds checked_cost_factor of its own fit's, -1: none.
 int worst_segment(const RelationRefit& refit, const std::vector<FitInformation>& own,
                   const std::vector<const Primitive*>& related, double max_cost_increase, double length);
 
