@@ -4,8 +4,9 @@ namespace primitive_edit {
 
 namespace {
 
-// Radius of the start on nearly flat points, in units of their extent: the circle bulges extent / 8e6 off
-// its chord, flatter than any scan, and the refinement takes it from there.
+// Radius of the start on nearly flat points, in units of their spread (the standard deviation along their
+// longest axis): over a chord of a few spreads the circle bulges about 1e-6 of a spread, flatter than any
+// scan, and the refinement takes it from there.
 constexpr double kFlatStartRadius = 1e6;
 
 } // namespace
@@ -41,11 +42,13 @@ FitResult fit_cylinder(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& n
     // huge radius lying on that plane (which the callers then find implausibly large), not one about another
     // direction (a flat top with a hole took the cylinder about its normal through the hole: RMS 2.1, against
     // 1e-7 for the huge one).
-    const Eigen::Vector3d flat_normal = pca.axes.col(0) - pca.axes.col(0).dot(d) * d;
-    const double extent = std::sqrt(std::max(0.0, pca.eigenvalues.maxCoeff()));
-    if (!pca.ok || !(flat_normal.norm() > 0.5) || !(extent > 0))
+    if (!pca.ok)
       continue;
-    p.radius = kFlatStartRadius * extent;
+    const Eigen::Vector3d flat_normal = pca.axes.col(0) - pca.axes.col(0).dot(d) * d;
+    const double spread = std::sqrt(std::max(0.0, pca.eigenvalues.maxCoeff()));
+    if (!(flat_normal.norm() > 0.5) || !(spread > 0))
+      continue;
+    p.radius = kFlatStartRadius * spread;
     p.origin = pca.centroid + p.radius * flat_normal.normalized();
     starts.push_back(p);
   }

@@ -12,8 +12,9 @@
 //           exact cylinder data) are used instead;
 //         - the three principal axes of the points (long cylinders, fallback without normals).
 //         A direction along which the points are seen as a line (flat data) starts a cylinder of radius 1e6
-//         times their extent lying on their plane: the degenerate best cylinder, which callers then find
-//         implausibly large, rather than only the starts about other directions.
+//         times their spread (standard deviation along their longest axis) lying on their plane: the
+//         degenerate best cylinder, which callers then find implausibly large, rather than only the starts
+//         about other directions.
 //         A direct type-constrained quadric solve was not used: on a short arc of noisy data it is
 //         biased anyway, and the normal-based axis plus the geometric refinement is more robust.
 //         Large inputs start on a 2000-point subsample; the winner is refined on all points.
