@@ -2,12 +2,13 @@
 // the filter makes (the scan's roughness for the automatic tolerance, gather_segment_samples, fit_segments with
 // the automatic type, snap_segments with sharp edges).
 // Input: a PLY whose per-face quality is the segment id (bench_segment_scan --segmented, or meshlabserver's
-// -m fq after a segmentation filter). The fit is run on 1 thread (the baseline) and on all hardware threads,
+// -m fq after a segmentation filter). The fit is run on 1 thread (the baseline) and on every CPU it may use,
 // each `--runs` times (default 5) on a fresh copy of the mesh; printed: median wall-clock times of each stage
 // and the ratio of the two fits.
 // Usage: bench_fit_all SEGMENTED.ply [--runs N]
 #include "bracket/bracket_mesh.h"
 
+#include "common/base/parallel_for.h"
 #include "common/pipeline/fit_all_segments.h"
 #include "median.h"
 #include "read_number.h"
@@ -16,7 +17,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -45,7 +45,7 @@ int main(int argc, char** argv)
     segment_of_face[f] = int(original.face[f].Q());
     count = std::max(count, segment_of_face[f] + 1);
   }
-  const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int hardware = primitive_edit::resolve_thread_count(0);
   std::vector<double> fit_one, fit_all, snap;
   int fitted = 0;
   for (int r = 0; r < runs; ++r) {

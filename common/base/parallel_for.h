@@ -1,8 +1,9 @@
 // parallel_for.h: loops over items on several threads: parallel_for splits [0, count) into contiguous ranges,
 // one per thread, for items of equal cost; for_each_largest_first deals items of unequal cost one at a time.
 //
-// Input:  parallel_for: count, the threads to use (<= 0: std::thread::hardware_concurrency()), the fewest items
-//         worth a thread of their own (grain), and body(begin, end), called once per range.
+// Input:  parallel_for: count, the threads to use (<= 0: every CPU the calling thread may run on, its affinity
+//         on Linux, else std::thread::hardware_concurrency()), the fewest items worth a thread of their own
+//         (grain), and body(begin, end), called once per range.
 //         for_each_largest_first: each item's size (its cost), the workers (>= 1, the caller's count) and
 //         body(worker, item), worker in [0, workers), called once per item.
 // Output: none. parallel_for's ranges are disjoint and cover [0, count), the calling thread takes the first.
@@ -25,7 +26,8 @@
 
 namespace primitive_edit {
 
-// The threads a "threads" parameter asks for: itself when positive, else every hardware thread.
+// The threads a "threads" parameter asks for: itself when positive, else every CPU the calling thread may run
+// on (taskset and a container's cpuset count; a CPU quota does not).
 int resolve_thread_count(int threads);
 
 // The grain of a pass that does a few arithmetic operations per face of a mesh: below this many faces a second

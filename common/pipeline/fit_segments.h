@@ -2,8 +2,8 @@
 //
 // Input:  the segments' samples (gather_segment_samples.h), optionally a type per segment (std::nullopt or a
 //         missing entry: the automatic type), the options of fit_segment, the number of threads (<= 0:
-//         std::thread::hardware_concurrency()), and an optional Progress (progress.h), called on the calling
-//         thread only (so a GUI callback is safe) after each segment that thread fitted, with the share of
+//         every CPU, resolve_thread_count in parallel_for.h), and an optional Progress (progress.h), called on the
+//         calling thread only (so a GUI callback is safe) after each segment that thread fitted, with the share of
 //         segments done; it may repeat a percentage. Fitting is not cancelled.
 // Output: one FitResult per segment, in segment order; a failed status (free-form, too few points, ...) says
 //         why. The results do not depend on the thread count: each segment is fitted by the same

@@ -1,5 +1,5 @@
-// Tests of common/base/parallel_for.h: every item is visited once, on any thread count, and
-// for_each_largest_first deals the items largest first.
+// Tests of common/base/parallel_for.h: every item is visited once, on any thread count,
+// for_each_largest_first deals the items largest first, and "all threads" means the CPUs the caller may use.
 #include "common/base/parallel_for.h"
 
 #include <gtest/gtest.h>
@@ -7,8 +7,13 @@
 #include <atomic>
 #include <vector>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 using primitive_edit::for_each_largest_first;
 using primitive_edit::parallel_for;
+using primitive_edit::resolve_thread_count;
 
 TEST(ParallelFor, CoversEveryIndexOnce)
 {
@@ -58,3 +63,23 @@ TEST(ForEachLargestFirst, NoItemsCallsNothing)
   for_each_largest_first({}, 4, [&](int, std::size_t) { ++calls; });
   EXPECT_EQ(calls, 0);
 }
+
+#if defined(__linux__)
+TEST(ResolveThreadCount, AllMeansTheCpusTheCallerMayRunOn)
+{
+  cpu_set_t saved;
+  ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
+  int first = 0;
+  while (!CPU_ISSET(first, &saved))
+    ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);  // as under taskset -c
+  const int pinned = resolve_thread_count(0);
+  ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
+  EXPECT_EQ(pinned, 1);
+  EXPECT_EQ(resolve_thread_count(-1), CPU_COUNT(&saved));
+  EXPECT_EQ(resolve_thread_count(3), 3);  // a count asked for is kept
+}
+#endif
