@@ -39,12 +39,13 @@ MEASURE = "Measure: Accuracy Against Reference"
 FIT_ALL = "Primitive: Fit All Segments"
 
 # Segmentation filters in order of preference, each with its complete parameter list (meshlabserver
-# 2020.09 asserts unless a script lists every parameter): name -> [(parameter, default, Rich type)].
+# 2020.09 asserts unless a script lists every parameter) at the filter's defaults (filter_segment.cpp):
+# name -> [(parameter, default, Rich type)].
 SEGMENTATIONS = {
     "Segment: Auto by Primitive Fit": [("Tolerance", 0.0, "RichFloat"), ("NormalAngle", 30.0, "RichFloat"),
                                        ("SeedPatchFaces", 60, "RichInt"), ("NormalSmoothing", 10, "RichInt")],
-    "Segment: Auto by Normal Angle": [("Angle", 30.0, "RichFloat"), ("NormalSmoothing", 2, "RichInt"),
-                                      ("MinSegmentFaces", 30, "RichInt")],
+    "Segment: Auto by Normal Angle": [("Angle", 20.0, "RichFloat"), ("NormalSmoothing", -1, "RichInt"),
+                                      ("MinSegmentFaces", -1, "RichInt")],
 }
 PREFERRED = ["Segment: Auto by Primitive Fit", "Segment: Auto by Normal Angle"]
 
