@@ -277,7 +277,8 @@ public:
   // shares with the rest of the part, and fit_relations() describes those relations in the session's ids (a
   // segment alone gets its own fit, one that shares nothing within tolerance Fit All's fit). The relations'
   // fit is taken while its RMS is within sqrt(checked_cost_factor) (1.73 at the default RelationCost) of the
-  // picked segments' own fit, as Fit All's check allows any segment; beyond, or when it fails, the own fit is kept and relations_refused() says why.
+  // picked segments' own fit, as Fit All's check allows any segment; beyond, or when it fails, the own fit is
+  // kept and relations_refused() says why.
   // On success the fit also becomes the edited primitive.
   FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined, bool relations = false)
   {

@@ -36,7 +36,8 @@ int worst_segment(const RelationRefit& refit, const std::vector<FitInformation>&
     if (!related[s])
       continue;
     const double after = refit.rms[s] * refit.rms[s] * own[s].weight;
-    const double allowed = checked_cost_factor(max_cost_increase) * own[s].cost + 1e-14 * length * length * own[s].weight;
+    const double allowed =
+        checked_cost_factor(max_cost_increase) * own[s].cost + 1e-14 * length * length * own[s].weight;
     if (after > allowed && after / allowed > worst_ratio) {
       worst = int(s);
       worst_ratio = after / allowed;
