@@ -327,7 +327,7 @@ std::vector<Relation> detect_direction_relations(const std::vector<const Primiti
                        std::vector<double>(primitives.size(), 0.0), max_angle, max_cost_increase};
   for (int s : directed) {
     const std::size_t i = std::size_t(s);
-    tests.floor[i] = 1e-14 * length * length * info[i].weight;
+    tests.floor[i] = round_off_cost(length, info[i].weight);
     tests.allowance[i] =
         std::max(max_cost_increase * info[i].cost + tests.floor[i], std::numeric_limits<double>::min());
   }

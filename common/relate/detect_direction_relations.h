@@ -71,7 +71,7 @@ struct DirectionTests
   const std::vector<const Primitive*>* primitives;
   const std::vector<FitInformation>* info;
   std::vector<double> allowance;  // the cost a segment may take (mean_direction's weights)
-  std::vector<double> floor;      // round-off of exact data: a relation that holds to 1e-7 of the part always passes
+  std::vector<double> floor;      // round_off_cost: a relation that holds to round-off always passes
   double max_angle, max_cost_increase;
 
   Eigen::Vector3d axis(int s) const { return (*primitives)[std::size_t(s)]->axis; }

@@ -34,6 +34,10 @@ int axis_turn_parameter(PrimitiveType type);
 
 FitInformation fit_information(const Primitive& p, const Eigen::MatrixX3d& points, const Eigen::VectorXd& w);
 
+// Round-off of exact data: a fit within 1e-7 of the part's size (length) is exact, and every cost test of the
+// relations lets a segment's cost rise by the cost of that distance over its weight (the sum of its weights).
+inline double round_off_cost(double length, double weight) { return 1e-14 * length * length * weight; }
+
 } // namespace primitive_edit
 
 #endif

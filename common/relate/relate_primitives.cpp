@@ -36,8 +36,7 @@ int worst_segment(const RelationRefit& refit, const std::vector<FitInformation>&
     if (!related[s])
       continue;
     const double after = refit.rms[s] * refit.rms[s] * own[s].weight;
-    const double allowed =
-        checked_cost_factor(max_cost_increase) * own[s].cost + 1e-14 * length * length * own[s].weight;
+    const double allowed = checked_cost_factor(max_cost_increase) * own[s].cost + round_off_cost(length, own[s].weight);
     if (after > allowed && after / allowed > worst_ratio) {
       worst = int(s);
       worst_ratio = after / allowed;
@@ -111,7 +110,7 @@ RelatedPrimitives relate_primitives(const std::vector<std::optional<Primitive>>&
     if (start[std::size_t(s)]) {
       RelatedSegment& r = segments[std::size_t(s)];
       const double rms = fit_residuals(r.primitive, r.points, r.weights).rms;
-      r.weights /= rms * rms + 1e-14 * length * length;
+      r.weights /= rms * rms + round_off_cost(length, 1.0);
     }
   out.distance = options.distance > 0 ? options.distance : is_known_scale(noise) ? 3.0 * noise : 0.01 * length;
   const double angle = radians_from_degrees(options.angle_deg);
