@@ -303,13 +303,17 @@ public:
       // user gets without relations is the one on the picked faces, which can differ where a type is forced on
       // data it does not suit. The relations may cost the picked segments what Fit All lets them cost any
       // segment, measured against that fit.
+      // On exact data both fits are exact to round-off, which may come out either way (1.3e-24 against 4e-28):
+      // Fit All's checks allow it too.
       const FitResult held = fit_among_all(type, method);
-      const double allowed = std::sqrt(checked_cost_factor(RelationOptions().max_cost_increase)) * out.rms;
+      const double allowed = std::sqrt(checked_cost_factor(RelationOptions().max_cost_increase)) * out.rms +
+                             std::sqrt(round_off_cost(part_size(), 1.0));
       if (held.status && (!out.status || held.rms <= allowed)) {
         out = held;
       } else if (held.status) {
         char text[160];
-        std::snprintf(text, sizeof text, "they would raise the RMS to %.4g from %.4g alone", held.rms, out.rms);
+        std::snprintf(text, sizeof text, "the fit among all segments would raise the RMS to %.4g from %.4g alone",
+                      held.rms, out.rms);
         fit_relations_.clear();
         relations_refused_ = text;
       } else if (out.status) {
@@ -330,8 +334,8 @@ public:
   const std::optional<FitResult>& last_fit() const { return fit_; }
   // The relations the last fit holds with other segments, one line each (describe_relation.h); empty without.
   const std::vector<std::string>& fit_relations() const { return fit_relations_; }
-  // Why the last fit holds no relations although they were asked for ("they would raise the RMS to ... from ...
-  // alone"); empty otherwise.
+  // Why the last fit holds no relations although they were asked for ("the fit among all segments would raise the
+  // RMS to ... from ... alone"); empty otherwise.
   const std::string& relations_refused() const { return relations_refused_; }
   // A warning when the last fit is far larger than the picked segments (implausible_size), else empty.
   std::string fit_warning() const
@@ -513,6 +517,20 @@ private:
     fit_points_.resize(0, 3);
     fit_relations_.clear();
     relations_refused_.clear();
+  }
+
+  // The bounding box diagonal of the mesh's finite vertices (1 without any): the scale of round-off.
+  double part_size() const
+  {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : mesh_->vert) {
+      const Eigen::Vector3d q(static_cast<double>(v.cP()[0]), static_cast<double>(v.cP()[1]),
+                              static_cast<double>(v.cP()[2]));
+      if (!v.IsD() && q.allFinite())
+        box.extend(q);
+    }
+    const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    return std::isfinite(size) && size > 0 ? size : 1.0;
   }
 
   int first_face_of(int segment) const
