@@ -526,23 +526,40 @@ TYPED_TEST(EditSessionTest, ApplyOfAPrimitiveFarLargerThanTheSegmentWaitsForConf
   EXPECT_TRUE(s.apply(true, true).status.ok());
 }
 
+// The plate with a hole (its 7 faces as segments, noise along the normals, seed 5) and a session attached to it.
+struct PlateSession
+{
+  explicit PlateSession(double noise) : plate(plate_fixture::make_plate_with_hole(noise, 5))
+  {
+    plate_fixture::build_mesh(m, plate.soup);
+    write_segment_ids(m, plate.soup.labels);
+    attached = s.attach(m).status.ok();
+  }
+  int first_face_of(int segment) const
+  {
+    return int(std::find(plate.soup.labels.begin(), plate.soup.labels.end(), segment) - plate.soup.labels.begin());
+  }
+  const plate_fixture::PlateWithHole plate;
+  test_mesh::TMesh m;
+  PrimitiveEditSession<test_mesh::TMesh> s;
+  bool attached = false;
+};
+
 // With relations the picked face is fitted among all the segments, as Fit All does: on a noisy plate the side
 // faces +x and -x come out parallel and square to the top (to the joint refit's convergence), which their own
 // fits, tilted by the noise, are not;
 // the relations are listed in the session's ids. Without relations the fit is the segment's own, as before.
 TEST(EditSessionRelations, FitHoldsTheRelationsOfThePickedFace)
 {
-  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(0.1, 5);
-  test_mesh::TMesh m;
-  plate_fixture::build_mesh(m, plate.soup);
-  write_segment_ids(m, plate.soup.labels);
-  PrimitiveEditSession<test_mesh::TMesh> s;
-  ASSERT_TRUE(s.attach(m).status.ok());
+  PlateSession p(0.1);
+  ASSERT_TRUE(p.attached);
+  const plate_fixture::PlateWithHole& plate = p.plate;
+  const test_mesh::TMesh& m = p.m;
+  PrimitiveEditSession<test_mesh::TMesh>& s = p.s;
   ASSERT_EQ(s.segment_count(), 7);
   const int top = 0, plus_x = 3, minus_x = 5;
   auto fit_plane = [&](int segment, bool relations) {
-    const auto face = std::find(plate.soup.labels.begin(), plate.soup.labels.end(), segment);
-    EXPECT_TRUE(s.pick(int(face - plate.soup.labels.begin()), false));
+    EXPECT_TRUE(s.pick(p.first_face_of(segment), false));
     const FitResult fit = s.fit(PrimitiveType::Plane, FitMethod::Refined, relations);
     EXPECT_TRUE(fit.status.ok()) << fit.status.error;
     EXPECT_TRUE(s.edited() && s.edited()->axis == fit.primitive.axis && s.edited()->origin == fit.primitive.origin);
@@ -589,17 +606,13 @@ TEST(EditSessionRelations, FitHoldsTheRelationsOfThePickedFace)
 // refused: the fit among all segments comes out worse than the face's own.
 TEST(EditSessionRelations, ExactPartHoldsItsRelations)
 {
-  const plate_fixture::PlateWithHole plate = plate_fixture::make_plate_with_hole(0.0, 5);
-  test_mesh::TMesh m;
-  plate_fixture::build_mesh(m, plate.soup);
-  write_segment_ids(m, plate.soup.labels);
-  PrimitiveEditSession<test_mesh::TMesh> s;
-  ASSERT_TRUE(s.attach(m).status.ok());
+  PlateSession p(0.0);
+  ASSERT_TRUE(p.attached);
+  PrimitiveEditSession<test_mesh::TMesh>& s = p.s;
   int exact = 0, held = 0;
   for (int segment = 0; segment < s.segment_count(); ++segment)
     for (int t = -1; t < kPrimitiveTypeCount; ++t) {
-      const auto face = std::find(plate.soup.labels.begin(), plate.soup.labels.end(), segment);
-      ASSERT_TRUE(s.pick(int(face - plate.soup.labels.begin()), false));
+      ASSERT_TRUE(s.pick(p.first_face_of(segment), false));
       const std::optional<PrimitiveType> type = t < 0 ? std::nullopt : std::optional<PrimitiveType>(PrimitiveType(t));
       const FitResult fit = s.fit(type, FitMethod::Refined, true);
       if (!fit.status.ok() || fit.rms > 1e-9)
