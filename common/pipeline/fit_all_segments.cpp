@@ -51,6 +51,7 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
     return Status::failure("relations: " + related.status.error);
   out.relations = related.relations;
   out.relations_dropped = related.dropped;
+  out.part_size = related.length;
   for (int s = 0; s < out.segment_count(); ++s) {
     const std::optional<Primitive>& p = related.primitives[std::size_t(s)];
     if (p && out.fits[std::size_t(s)].status.ok())

@@ -74,6 +74,7 @@ struct FitAllSegmentsResult
   double fitted_area = 0, total_area = 0;
   std::vector<Relation> relations;  // kept by the joint refit, in terms of segment ids; see Output
   int relations_dropped = 0;        // found, then dropped by the check after the refit
+  double part_size = 0;             // the relations' length scale (RelatedPrimitives::length); 0 without them
   std::vector<SegmentProfile> profiles;   // segments given their profile about a cylinder segment's axis
   std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   std::optional<SnapReport> snap;

@@ -277,8 +277,8 @@ public:
   // shares with the rest of the part, and fit_relations() describes those relations in the session's ids (a
   // segment alone gets its own fit, one that shares nothing within tolerance Fit All's fit). The relations'
   // fit is taken while its RMS is within sqrt(checked_cost_factor) (1.73 at the default RelationCost) of the
-  // picked segments' own fit, as Fit All's check allows any segment; beyond, or when it fails, the own fit is
-  // kept and relations_refused() says why.
+  // picked segments' own fit plus round-off (round_off_cost), as Fit All's check allows any segment; beyond, or
+  // when it fails, the own fit is kept and relations_refused() says why.
   // On success the fit also becomes the edited primitive.
   FitResult fit(std::optional<PrimitiveType> type, FitMethod method = FitMethod::Refined, bool relations = false)
   {
@@ -304,10 +304,11 @@ public:
       // data it does not suit. The relations may cost the picked segments what Fit All lets them cost any
       // segment, measured against that fit.
       // On exact data both fits are exact to round-off, which may come out either way (1.3e-24 against 4e-28):
-      // Fit All's checks allow it too.
-      const FitResult held = fit_among_all(type, method);
+      // Fit All's checks allow it too, at the part's size as they measure it.
+      double part_size = 0;
+      const FitResult held = fit_among_all(type, method, part_size);
       const double allowed = std::sqrt(checked_cost_factor(RelationOptions().max_cost_increase)) * out.rms +
-                             std::sqrt(round_off_cost(part_size(), 1.0));
+                             std::sqrt(round_off_cost(part_size, 1.0));
       if (held.status && (!out.status || held.rms <= allowed)) {
         out = held;
       } else if (held.status) {
@@ -519,20 +520,6 @@ private:
     relations_refused_.clear();
   }
 
-  // The bounding box diagonal of the mesh's finite vertices (1 without any): the scale of round-off.
-  double part_size() const
-  {
-    Eigen::AlignedBox3d box;
-    for (const auto& v : mesh_->vert) {
-      const Eigen::Vector3d q(static_cast<double>(v.cP()[0]), static_cast<double>(v.cP()[1]),
-                              static_cast<double>(v.cP()[2]));
-      if (!v.IsD() && q.allFinite())
-        box.extend(q);
-    }
-    const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
-    return std::isfinite(size) && size > 0 ? size : 1.0;
-  }
-
   int first_face_of(int segment) const
   {
     for (std::size_t f = 0; f < labels_.size(); ++f)
@@ -542,8 +529,9 @@ private:
   }
 
   // The picked segments fitted as one among all segments, with the relations Fit All finds (fit); their
-  // relations, in the session's ids, go to fit_relations_.
-  FitResult fit_among_all(std::optional<PrimitiveType> type, FitMethod method)
+  // relations, in the session's ids, go to fit_relations_, and the length that scales their round-off to
+  // part_size (0 when Fit All related nothing).
+  FitResult fit_among_all(std::optional<PrimitiveType> type, FitMethod method, double& part_size)
   {
     std::vector<int> labels = labels_;
     const int face = first_face_of(picked_.front());
@@ -565,6 +553,7 @@ private:
       failed.status = all.status;
       return failed;
     }
+    part_size = all.part_size;
     FitResult out = all.fits[std::size_t(joined)];
     if (!out.status)
       return out;
