@@ -625,4 +625,26 @@ TEST(EditSessionRelations, ExactPartHoldsItsRelations)
   EXPECT_GT(held, 0);
 }
 
+// A sphere forced on the plate's flat top fits its faces alone far better (RMS 0.0037) than among all segments
+// (0.0194, beyond the allowance): the relations are refused with both RMS in the message, and the fit is the
+// top's own, the one the session gives without relations.
+TEST(EditSessionRelations, RefusedRelationsKeepTheOwnFit)
+{
+  PlateSession p(0.0);
+  ASSERT_TRUE(p.attached);
+  PrimitiveEditSession<test_mesh::TMesh>& s = p.s;
+  const int top = 0;
+  ASSERT_TRUE(s.pick(p.first_face_of(top), false));
+  const FitResult own = s.fit(PrimitiveType::Sphere, FitMethod::Refined, false);
+  ASSERT_TRUE(own.status.ok()) << own.status.error;
+  const FitResult fit = s.fit(PrimitiveType::Sphere, FitMethod::Refined, true);
+  ASSERT_TRUE(fit.status.ok()) << fit.status.error;
+  EXPECT_EQ(s.relations_refused().rfind("the fit among all segments would raise the RMS to ", 0), 0u)
+      << s.relations_refused();
+  EXPECT_TRUE(s.fit_relations().empty());
+  EXPECT_EQ(fit.rms, own.rms);
+  ASSERT_TRUE(s.edited().has_value());
+  EXPECT_EQ(s.edited()->type, PrimitiveType::Sphere);
+}
+
 } // namespace
