@@ -48,6 +48,8 @@ SEGMENTATIONS = {
                                       ("MinSegmentFaces", -1, "RichInt")],
 }
 PREFERRED = ["Segment: Auto by Primitive Fit", "Segment: Auto by Normal Angle"]
+# The segmentation filters' log line with their time ("Segment: ... in N ms").
+SEGMENT_MS = re.compile(r"Segment: .* in (\d+) ms")
 
 # Face count ~ FACES_PER_AREA * area / voxel^2 for the bracket's scans with preset paper (the rough
 # surface gives more triangles than a smooth one); see bench/bracket/README.md.
@@ -144,7 +146,7 @@ def parse_run(lines):
         if m:
             out["accuracy"].append({"within": float(m.group(1)), "mean": float(m.group(3)),
                                     "rms": float(m.group(4)), "max": float(m.group(5))})
-        m = re.match(r"Segment: .* in (\d+) ms", text)
+        m = SEGMENT_MS.match(text)
         if m:
             out["segment_ms"] = int(m.group(1))
         m = re.match(r"Segment: .*?split into (\d+) segments", text)

@@ -14,7 +14,6 @@ Standard library only.
 """
 import argparse
 import os
-import re
 import statistics
 import subprocess
 import sys
@@ -26,7 +25,7 @@ REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tests", "script"))
 sys.path.insert(0, HERE)
 from meshlab_script import param, write_mlx  # noqa: E402
-from run_pipeline import SEGMENTATIONS  # noqa: E402
+from run_pipeline import SEGMENT_MS, SEGMENTATIONS  # noqa: E402
 
 
 def start_display():
@@ -45,6 +44,8 @@ def start_display():
 
 def run(meshlabserver, cpus, mesh, out, script, env):
     """Wall seconds of one meshlabserver run and the filter's logged ms (None without a script)."""
+    if os.path.exists(out):
+        os.remove(out)  # so that a run that saves nothing cannot pass on the last round's file
     cmd = ["taskset", "-c", cpus, meshlabserver, "-i", mesh, "-o", out, "-m", "fq"]
     if script:
         cmd += ["-s", script]
@@ -54,7 +55,7 @@ def run(meshlabserver, cpus, mesh, out, script, env):
     text = done.stdout.decode(errors="replace")
     if done.returncode != 0 or not os.path.isfile(out):
         raise SystemExit("time_segment_filter: meshlabserver failed (exit %d):\n%s" % (done.returncode, text[-2000:]))
-    logged = re.search(r"Segment: .* in (\d+) ms", text)
+    logged = SEGMENT_MS.search(text)
     if script and not logged:
         raise SystemExit("time_segment_filter: the filter logged no time:\n%s" % text[-2000:])
     return seconds, int(logged.group(1)) if logged else None
