@@ -7,7 +7,8 @@ Per scan, one meshlabserver run (reference loaded first: layer 0 = reference, la
   Primitive: Fit All Segments           Relations, Snap, SharpEdges, Export JSON
   Measure: Accuracy Against Reference   the output accuracy
 then the segmented, snapped scan (saved with its face quality = segment id) is scored against the
-scan's ground truth with bench/score_segmentation.py. Printed (and written as markdown with --report):
+scan's ground truth with bench/score_segmentation.py, each face weighed by its area in the scan (the mesh that
+was segmented; the snap stretches and collapses triangles). Printed (and written as markdown with --report):
 faces, input and output share within the tolerance and mean distance, area labelled correctly, area
 with the right primitive type, the hole radius errors, and the time of each stage.
 
@@ -212,7 +213,8 @@ def run_scan(args, label, scan, truth, segmentation):
             scan, code, os.path.join(work, "meshlabserver.log"), tail))
     if truth and os.path.exists(truth):
         t1 = time.monotonic()
-        r["score"] = score(out_ply, truth, args.reference_json, fit_json if os.path.exists(fit_json) else None)
+        r["score"] = score(out_ply, truth, args.reference_json, fit_json if os.path.exists(fit_json) else None,
+                           area_ply=scan)
         r["score_s"] = time.monotonic() - t1
     r["wall_s"] = time.monotonic() - t0
     return r
@@ -251,8 +253,8 @@ def table(results, reference, args, segmentation):
     md = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     md += ["| " + " | ".join(row) + " |" for row in rows]
     notes = ["Within %g mm of the reference, mean distance; %d samples (the paper's measure). Segmentation: %s "
-             "(%s). labelled: share of the area whose segment matches its true surface; typed: share with the "
-             "right primitive type. Times: segment, fit and snap from the plugins' logs; measure: both "
+             "(%s). labelled: share of the scan's area whose segment matches its true surface; typed: share with "
+             "the right primitive type (areas of the scan as segmented, not as snapped). Times: segment, fit and snap from the plugins' logs; measure: both "
              "accuracy filters; total: wall time of meshlabserver (loading, all filters, saving) and scoring."
              % (args.tolerance, args.samples, segmentation[0], segmentation[2])]
     return "\n".join(text), "\n".join(md + [""] + notes)

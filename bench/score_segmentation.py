@@ -4,12 +4,15 @@ Inputs: the segmented scan PLY (face quality = segment id, as `meshlabserver -m 
 truth file (one B-rep face index per scan face, `simulate_ct_scan --truth`), the reference JSON
 (`make_bracket`), and optionally the JSON that `Primitive: Fit All Segments` exported.
 
+With AREA.ply (a mesh with the same faces, e.g. the scan before a snap moved its vertices) the areas that weigh
+the scores are that mesh's.
+
 Each segment is matched to the B-rep face it overlaps most (by area); faces on the same analytic surface
 (`surface` in the reference JSON) count as one. Reported:
 - labelled: share of the area whose segment is matched to the face's true surface;
 - typed: share of the area whose segment's fitted type equals the true surface type;
 - the radius error of every cylinder of the reference that a fitted cylinder segment matches.
-Usage: score_segmentation.py SCAN.ply TRUTH.txt REFERENCE.json [FIT_EXPORT.json]
+Usage: score_segmentation.py SCAN.ply TRUTH.txt REFERENCE.json [FIT_EXPORT.json [AREA.ply]]
 """
 import json
 import math
@@ -33,9 +36,16 @@ def read_truth(path):
         return [int(line) for line in f if line.strip() and not line.startswith("#")]
 
 
-def score(scan_ply, truth_txt, reference_json, fit_json=None):
+def score(scan_ply, truth_txt, reference_json, fit_json=None, area_ply=None):
     vertices, faces, face_props, _ = read_ply(scan_ply)
     segment = [int(round(q)) for q in face_props["quality"]]
+    if area_ply:
+        # The areas of the mesh that was segmented: a snapped output's triangles are stretched or collapsed
+        # by the fits, which would weigh the segmentation by the fits' geometry.
+        area_vertices, area_faces, _, _ = read_ply(area_ply)
+        if len(area_faces) != len(faces) or any(tuple(a) != tuple(b) for a, b in zip(area_faces, faces)):
+            raise SystemExit("%s and %s do not have the same faces" % (area_ply, scan_ply))
+        vertices = area_vertices
     truth_face = read_truth(truth_txt)
     if len(truth_face) != len(faces):
         raise SystemExit("truth has %d faces, scan %d" % (len(truth_face), len(faces)))
@@ -77,7 +87,7 @@ def score(scan_ply, truth_txt, reference_json, fit_json=None):
 def main():
     if len(sys.argv) < 4:
         raise SystemExit(__doc__)
-    r = score(*sys.argv[1:5])
+    r = score(*sys.argv[1:6])
     print("faces %d, segments %d, area labelled correctly %.1f%%" % (r["faces"], r["segments"], 100 * r["labelled"]))
     if "typed" in r:
         print("area with the right primitive type %.1f%%" % (100 * r["typed"]))
