@@ -2,6 +2,24 @@
 
 namespace primitive_edit {
 
+double share_near_neighbours(const GrowingFaces& g, const GrowingRegions& regions, const std::vector<int>& faces,
+                             const std::vector<int>& neighbours, double tol, double angle)
+{
+  const std::size_t n = faces.size(), count = std::min(n, std::size_t(kShareSampleCount));
+  const FaceAgreement agrees(tol, angle);
+  double in = 0, all = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int f = faces[count == n ? i : (i * n) / count];
+    all += g.area[std::size_t(f)];
+    for (int q : neighbours)
+      if (agrees(g, regions.primitive[std::size_t(q)], f)) {
+        in += g.area[std::size_t(f)];
+        break;
+      }
+  }
+  return all > 0 ? in / all : 0.0;
+}
+
 int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
                            GrowingRegions& regions)
 {
@@ -27,15 +45,13 @@ int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, cons
       }
     std::sort(neighbours.begin(), neighbours.end());
     neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-    for (int q : neighbours)
-      if (sampled_share(g, regions.primitive[std::size_t(q)], faces, 2.0 * scale.tolerance, scale.angle) >=
-          kMergeShare) {
-        for (int f : faces)
-          label[std::size_t(f)] = -1;
-        std::vector<int>().swap(faces);
-        ++dissolved;
-        break;
-      }
+    if (!neighbours.empty() && share_near_neighbours(g, regions, faces, neighbours, 2.0 * scale.tolerance,
+                                                     scale.angle) >= kMergeShare) {
+      for (int f : faces)
+        label[std::size_t(f)] = -1;
+      std::vector<int>().swap(faces);
+      ++dissolved;
+    }
   }
   return dissolved;
 }

@@ -559,4 +559,87 @@ TEST(RelaxRegionBorders, MovesWhatAPassOverEveryFaceMoves)
   }
 }
 
+// The floor z = 0 (x <= -c) and the wall x = 0 (z >= c) joined by a 45-degree chamfer of setback c, extruded
+// along y in [0, 4] with grid step h; exact.
+void make_chamfered_corner(test_mesh::TMesh& m, double c, double h)
+{
+  const double chamfer = c * std::sqrt(2.0), length = (6.0 - c) + chamfer + (6.0 - c);
+  auto at = [&](double s) -> Eigen::Vector2d {
+    if (s <= 6.0 - c)
+      return Eigen::Vector2d(s - 6.0, 0.0);
+    if (s <= 6.0 - c + chamfer)
+      return Eigen::Vector2d(-c, 0.0) + (s - (6.0 - c)) / chamfer * Eigen::Vector2d(c, c);
+    return Eigen::Vector2d(0.0, c + (s - (6.0 - c + chamfer)));
+  };
+  const int nu = int(std::ceil(length / h)), nv = int(std::ceil(4.0 / h));
+  auto vi = vcg::tri::Allocator<test_mesh::TMesh>::AddVertices(m, size_t(nu + 1) * size_t(nv + 1));
+  for (int i = 0; i <= nu; ++i)
+    for (int j = 0; j <= nv; ++j, ++vi) {
+      const Eigen::Vector2d q = at(length * i / nu);
+      vi->P() = test_mesh::TMesh::CoordType(q[0], 4.0 * j / nv, q[1]);
+    }
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      auto* a = &m.vert[size_t(i) * size_t(nv + 1) + size_t(j)];
+      auto* b = &m.vert[size_t(i + 1) * size_t(nv + 1) + size_t(j)];
+      auto* d = &m.vert[size_t(i) * size_t(nv + 1) + size_t(j + 1)];
+      auto* e = &m.vert[size_t(i + 1) * size_t(nv + 1) + size_t(j + 1)];
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, a, e, b);
+      vcg::tri::Allocator<test_mesh::TMesh>::AddFace(m, a, d, e);
+    }
+}
+
+// Regions over a chamfered corner: the floor beyond x = -1.5, the wall above z = 1.5, and between them a strip
+// with the chamfer's plane as its primitive.
+GrowingRegions corner_regions(const GrowingFaces& g, double c)
+{
+  GrowingRegions r;
+  r.primitive = {test_fit::make_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()),
+                 test_fit::make_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
+                 test_fit::make_plane(Eigen::Vector3d(-c, 0, 0), Eigen::Vector3d(-1, 0, 1).normalized())};
+  r.faces.resize(3);
+  r.label.resize(g.centroid.size());
+  for (std::size_t f = 0; f < g.centroid.size(); ++f) {
+    const int region = g.centroid[f].x() < -1.5 ? 0 : g.centroid[f].z() > 1.5 ? 1 : 2;
+    r.label[f] = region;
+    r.faces[std::size_t(region)].push_back(int(f));
+  }
+  return r;
+}
+
+// A strip of a blurred edge: most of its faces lie on the floor or the wall (43% each), a few on a chamfer of
+// 0.3 mm. No one neighbour explains half of it, the two do face by face: it dissolves, and its faces go to them.
+// A chamfer of 2 mm, a surface of its own, stays.
+TEST(DissolveRoughRegions, StripExplainedByItsNeighboursFaceByFaceDissolves)
+{
+  GrowingScale scale;
+  scale.tolerance = 0.1;
+  scale.angle = radians_from_degrees(30.0);
+  for (const double c : {0.3, 2.0}) {
+    test_mesh::TMesh m;
+    make_chamfered_corner(m, c, 0.1);
+    const FaceAdjacency adj = build_face_adjacency(m);
+    const GrowingFaces g = growing_faces(m, adj, 0);
+    GrowingRegions regions = corner_regions(g, c);
+    const std::vector<int> strip = regions.faces[2];
+    ASSERT_LT(strip.size(), regions.faces[0].size());
+    for (int q : {0, 1})
+      EXPECT_LT(sampled_share(g, regions.primitive[std::size_t(q)], strip, 2.0 * scale.tolerance, scale.angle),
+                kMergeShare)
+          << "one neighbour alone explains the strip (c = " << c << ")";
+    const double both = share_near_neighbours(g, regions, strip, {0, 1}, 2.0 * scale.tolerance, scale.angle);
+    if (c < 1.0) {
+      EXPECT_GT(both, 0.8);
+      EXPECT_EQ(dissolve_rough_regions(g, adj, scale, regions), 1);
+      EXPECT_TRUE(regions.faces[2].empty());
+      for (int f : strip)
+        EXPECT_EQ(regions.label[std::size_t(f)], -1);
+    } else {
+      EXPECT_LT(both, 0.2);
+      EXPECT_EQ(dissolve_rough_regions(g, adj, scale, regions), 0);
+      EXPECT_EQ(regions.faces[2], strip);
+    }
+  }
+}
+
 } // namespace
