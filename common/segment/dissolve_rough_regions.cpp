@@ -5,19 +5,11 @@ namespace primitive_edit {
 double share_near_neighbours(const GrowingFaces& g, const GrowingRegions& regions, const std::vector<int>& faces,
                              const std::vector<int>& neighbours, double tol, double angle)
 {
-  const std::size_t n = faces.size(), count = std::min(n, std::size_t(kShareSampleCount));
   const FaceAgreement agrees(tol, angle);
-  double in = 0, all = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const int f = faces[count == n ? i : (i * n) / count];
-    all += g.area[std::size_t(f)];
-    for (int q : neighbours)
-      if (agrees(g, regions.primitive[std::size_t(q)], f)) {
-        in += g.area[std::size_t(f)];
-        break;
-      }
-  }
-  return all > 0 ? in / all : 0.0;
+  return strided_share_where(g, faces, kShareSampleCount, [&](int f) {
+    return std::any_of(neighbours.begin(), neighbours.end(),
+                       [&](int q) { return agrees(g, regions.primitive[std::size_t(q)], f); });
+  });
 }
 
 int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,

@@ -140,21 +140,29 @@ private:
   double tol_, angle_, always_, never_;
 };
 
-// Share (by area) of faces[i * n / count] for count = min(n, max_count) evenly strided faces.
-inline double strided_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
-                            double angle, std::size_t max_count)
+// Share (by area) of the faces[i * n / count], for count = min(n, max_count) evenly strided faces, for which
+// holds(f).
+template <class Holds>
+double strided_share_where(const GrowingFaces& g, const std::vector<int>& faces, std::size_t max_count, Holds holds)
 {
   const std::size_t n = faces.size();
   const std::size_t count = std::min(n, max_count);
-  const FaceAgreement agrees(tol, angle);
   double in = 0, all = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const int f = faces[count == n ? i : (i * n) / count];
     all += g.area[std::size_t(f)];
-    if (agrees(g, prim, f))
+    if (holds(f))
       in += g.area[std::size_t(f)];
   }
   return all > 0 ? in / all : 0.0;
+}
+
+// The same share of the faces that agree with prim.
+inline double strided_share(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces, double tol,
+                            double angle, std::size_t max_count)
+{
+  const FaceAgreement agrees(tol, angle);
+  return strided_share_where(g, faces, max_count, [&](int f) { return agrees(g, prim, f); });
 }
 
 // Whether the agreeing share of all `faces` is at least `share`, stopping as soon as that is sure: the area that
