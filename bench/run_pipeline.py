@@ -254,8 +254,9 @@ def table(results, reference, args, segmentation):
     md += ["| " + " | ".join(row) + " |" for row in rows]
     notes = ["Within %g mm of the reference, mean distance; %d samples (the paper's measure). Segmentation: %s "
              "(%s). labelled: share of the scan's area whose segment matches its true surface; typed: share with "
-             "the right primitive type (areas of the scan as segmented, not as snapped). Times: segment, fit and snap from the plugins' logs; measure: both "
-             "accuracy filters; total: wall time of meshlabserver (loading, all filters, saving) and scoring."
+             "the right primitive type (areas of the scan as segmented, not as snapped). Times: segment, fit and "
+             "snap from the plugins' logs; measure: both accuracy filters; total: wall time of meshlabserver "
+             "(loading, all filters, saving) and scoring."
              % (args.tolerance, args.samples, segmentation[0], segmentation[2])]
     return "\n".join(text), "\n".join(md + [""] + notes)
 
