@@ -35,9 +35,10 @@
 //            least half of its area. The share is measured per region, so that a small region of another
 //            surface is not outvoted, and against the scan's own roughness: faces of one rough surface
 //            miss the tests here and there, those of a surface meeting it at an edge almost all miss.
-//            Then, smallest first, a region that agrees over half its area with a larger neighbour's
-//            primitive at twice the tolerance (a crest or trough of the roughness, parallel to the
-//            surface but beyond the tolerance) is dissolved.
+//            Then, smallest first, a region whose faces agree over half its area with its larger
+//            neighbours' primitives at twice the tolerance, face by face any of them (a crest or trough of
+//            the roughness, parallel to a surface but beyond the tolerance; a strip of a blurred edge that
+//            the two surfaces beside it explain), is dissolved.
 //         4. the faces left over (blurred edges, fillets smaller than a patch, failed seeds, dissolved
 //            regions) go, by a best-first flood (priority = distance to the region's primitive), to the
 //            adjacent region whose primitive is nearest: a blurred edge between two planes is split at
