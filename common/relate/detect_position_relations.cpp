@@ -125,8 +125,7 @@ std::vector<Relation> affordable_candidates(std::vector<Candidate> candidates,
     bool ok = true;
     for (int s : {r.a, r.b}) {
       const FitInformation& fi = info[std::size_t(s)];
-      ok = ok &&
-           rise[std::size_t(s)] <= max_cost_increase * fi.cost + round_off_cost(length, fi.weight);
+      ok = ok && rise[std::size_t(s)] <= max_cost_increase * fi.cost + round_off_cost(length, fi.weight);
     }
     if (!ok)
       continue;
