@@ -81,6 +81,9 @@ def one_copy(args, scan, work):
     """(segments, labelled % or None, within %, mean mm) of the pipeline on one copy."""
     bench = os.path.join(args.build, "bench")
     segmented, snapped = os.path.join(work, "segmented.ply"), os.path.join(work, "snapped.ply")
+    for old in (segmented, snapped):  # so that a step that writes nothing cannot pass on the last copy's file
+        if os.path.exists(old):
+            os.remove(old)
     cmd = [os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1", "--segmented",
            segmented]
     text = run(cmd + ["--truth", args.truth] if args.truth else cmd)
