@@ -19,25 +19,39 @@ Eigen::Vector3d in_section(const EdgeSection& e, const Eigen::Vector3d& p)
 
 } // namespace
 
-std::optional<EdgeSection> edge_section(const Primitive& a, const Primitive& b, const Eigen::Vector3d& kept_a,
-                                        const Eigen::Vector3d& kept_b, const Eigen::Vector3d& near)
+std::optional<PlanesLine> planes_line(const Primitive& a, const Primitive& b, const Eigen::Vector3d& near)
 {
   if (a.type != PrimitiveType::Plane || b.type != PrimitiveType::Plane || !primitive_is_valid(a) ||
-      !primitive_is_valid(b) || !kept_a.allFinite() || !kept_b.allFinite() || !near.allFinite())
+      !primitive_is_valid(b) || !near.allFinite())
     return std::nullopt;
   const Eigen::Vector3d direction = a.axis.cross(b.axis);
   const double sine = direction.norm();
   if (!(sine >= std::sin(radians_from_degrees(kMinBlendAngleDeg))))
     return std::nullopt;
-  EdgeSection e;
-  e.direction = direction / sine;
+  PlanesLine line;
+  line.direction = direction / sine;
   Eigen::Matrix3d m;
   m.row(0) = a.axis.transpose();
   m.row(1) = b.axis.transpose();
-  m.row(2) = e.direction.transpose();
-  e.origin = m.partialPivLu().solve(Eigen::Vector3d(a.axis.dot(a.origin), b.axis.dot(b.origin), e.direction.dot(near)));
-  if (!e.origin.allFinite())
+  m.row(2) = line.direction.transpose();
+  line.origin =
+      m.partialPivLu().solve(Eigen::Vector3d(a.axis.dot(a.origin), b.axis.dot(b.origin), line.direction.dot(near)));
+  if (!line.origin.allFinite())
     return std::nullopt;
+  return line;
+}
+
+std::optional<EdgeSection> edge_section(const Primitive& a, const Primitive& b, const Eigen::Vector3d& kept_a,
+                                        const Eigen::Vector3d& kept_b, const Eigen::Vector3d& near)
+{
+  if (!kept_a.allFinite() || !kept_b.allFinite())
+    return std::nullopt;
+  const std::optional<PlanesLine> line = planes_line(a, b, near);
+  if (!line)
+    return std::nullopt;
+  EdgeSection e;
+  e.origin = line->origin;
+  e.direction = line->direction;
   auto ray = [&](const Primitive& plane, const Eigen::Vector3d& kept) -> std::optional<Eigen::Vector3d> {
     const Eigen::Vector3d r = e.direction.cross(plane.axis).normalized();
     const double side = (kept - e.origin).dot(r);

@@ -4,7 +4,8 @@
 //         half of it that the part keeps (the other side of the edge is cut away by the other plane), a point
 //         near the edge (where along it), and for a blend its form and setback s > 0 (from the edge to each
 //         tangent line, along the planes).
-// Output: EdgeSection: a point of the planes' common line and its direction, the ray along each plane away
+// Output: planes_line: the planes' common line (a point near a given one and its direction).
+//         EdgeSection: a point of the planes' common line and its direction, the ray along each plane away
 //         from the line (into the half kept), the rays' unit bisector and half the angle between them; the
 //         blend's surface: for a fillet the cylinder tangent to both planes along the tangent lines (axis along
 //         the line through bisector * s / cos(half angle), radius s * tan(half angle)), for a chamfer the plane
@@ -34,8 +35,15 @@ struct EdgeSection
   double half_angle = 0;
 };
 
-// std::nullopt when a plane is not a valid plane, the planes are too near parallel, a point is not finite or a
-// `kept` point lies on the line.
+// The line two planes meet in: its point nearest `near` and its direction (a.axis x b.axis, normalised).
+// std::nullopt when a plane is not a valid plane, the planes are too near parallel or `near` is not finite.
+struct PlanesLine
+{
+  Eigen::Vector3d origin, direction;
+};
+std::optional<PlanesLine> planes_line(const Primitive& a, const Primitive& b, const Eigen::Vector3d& near);
+
+// std::nullopt when planes_line has no line, a point is not finite or a `kept` point lies on the line.
 std::optional<EdgeSection> edge_section(const Primitive& a, const Primitive& b, const Eigen::Vector3d& kept_a,
                                         const Eigen::Vector3d& kept_b, const Eigen::Vector3d& near);
 
