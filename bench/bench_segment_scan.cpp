@@ -277,6 +277,12 @@ int segment_scan(bracket::BMesh& m, const Args& g, std::vector<int>& segment_of_
               g.scan_path.c_str(), m.face.size(), K, typed, report.grown_regions, report.tolerance, report.roughness);
   std::printf("segmentation: median %.3f s of %d runs (min %.3f, max %.3f), %.0f ns/face\n", median(times), g.runs,
               *fastest, *slowest, 1e9 * median(times) / double(m.face.size()));
+  // As the filter does: Fit All makes the segments carved as blends the blends of their planes.
+  write_segment_blends(m, segment_of_face, report.blends);
+  std::printf("blends carved: %zu:", report.blends.size());
+  for (const SegmentBlendRecord& b : report.blends)
+    std::printf(" %d of (%d,%d)", b.segment, b.plane_a, b.plane_b);
+  std::printf("\n");
   return K;
 }
 

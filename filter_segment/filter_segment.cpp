@@ -9,6 +9,7 @@
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "common/mesh/segment_primitive_attribute.h"
+#include "common/mesh/segment_blends_attribute.h"
 #include "common/mesh/surface_roughness_attribute.h"
 #include "common/segment/split_segments_by_plane.h"
 #include "meshlab_api/load_segments.h"
@@ -270,6 +271,7 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   const int k = segment_by_primitive_growing(mm.cm, adjacency, params, segment_of_face, &report, run.progress);
   storeSegments(mm, segment_of_face, &adjacency);
   write_surface_roughness(mm.cm, report.roughness);  // the fits that follow reuse it
+  write_segment_blends(mm.cm, segment_of_face, report.blends);  // Fit All makes them blends of their planes
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
   return Status::success();

@@ -187,6 +187,12 @@ void check_primitive_growing(Decoder& in, MeshType& m, const FaceAdjacency& adj)
     check_segmentation(m, grown, G);
     FUZZ_CHECK(report.primitive_of_segment.size() == size_t(G));
     FUZZ_CHECK(std::isfinite(report.roughness) && report.roughness >= 0 && report.tolerance >= 0);
+    // A carved blend is a segment with a valid primitive between two other segments.
+    for (const SegmentBlendRecord& b : report.blends)
+      FUZZ_CHECK(b.segment >= 0 && b.segment < G && b.plane_a >= 0 && b.plane_a < G && b.plane_b >= 0 &&
+                 b.plane_b < G && b.segment != b.plane_a && b.segment != b.plane_b && b.plane_a != b.plane_b &&
+                 report.primitive_of_segment[size_t(b.segment)] &&
+                 primitive_is_valid(*report.primitive_of_segment[size_t(b.segment)]));
     FUZZ_CHECK(segment_by_primitive_growing(m, adj, grow, again) == G && again == grown);
     const double kept = surface_roughness(m, adj);
     FUZZ_CHECK(std::isfinite(kept) && kept >= 0 && read_surface_roughness(m) == kept);
@@ -377,6 +383,11 @@ void check_fit_all(Decoder& in, MeshType& m, const std::vector<int>& seg, int K,
         t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
     options.fit = params.fit;
     options.threads = 1 + in.u8() % 2;
+    // Blends kept on the mesh as the segmentation keeps them, naming any segments or none: Fit All checks each.
+    std::vector<SegmentBlendRecord> given(size_t(in.u8() % 4));
+    for (auto& b : given)
+      b = {int(in.u8() % (K + 2)) - 1, int(in.u8() % (K + 2)) - 1, int(in.u8() % (K + 2)) - 1};
+    write_segment_blends(m, seg, given);
     const FitAllSegmentsResult r = fit_all_segments(m, seg, options);
     if (r.status.ok()) {
       FUZZ_CHECK(r.segment_count() == K && r.primitives.size() == size_t(K) && !r.snap);

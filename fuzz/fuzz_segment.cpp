@@ -4,10 +4,10 @@
 // The bytes are decoded (fuzz_input.h) into a mesh of at most 16 x 16 vertices of a patch of a shape plus
 // arbitrary faces (MeshLab's float CMeshO or a double mesh) and the parameters of both segmentations, kept in
 // the ranges the filters accept (the filters refuse others: check_primitive_growing_params). Entry points:
-// segment_by_primitive_growing (normals, roughness, seed, grow, merge, dissolve, assign, relax) and
+// segment_by_primitive_growing (normals, roughness, seed, grow, merge, dissolve, assign, relax, blends) and
 // segment_by_normal_angle. Invariants: dense ids with every live face labelled and deleted ones -1, one
-// primitive per segment, a finite roughness kept on the mesh, and the same result on a second run with another
-// thread count.
+// primitive per segment, carved blends between two other segments, a finite roughness kept on the mesh, and the
+// same result on a second run with another thread count.
 #include "common/mesh/surface_roughness_attribute.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
@@ -50,6 +50,12 @@ void run(Decoder& in)
     check_segmentation(m, grown, G);
     FUZZ_CHECK(report.primitive_of_segment.size() == size_t(G));
     FUZZ_CHECK(std::isfinite(report.roughness) && report.roughness >= 0 && report.tolerance >= 0);
+    // A carved blend is a segment with a valid primitive between two other segments.
+    for (const SegmentBlendRecord& b : report.blends)
+      FUZZ_CHECK(b.segment >= 0 && b.segment < G && b.plane_a >= 0 && b.plane_a < G && b.plane_b >= 0 &&
+                 b.plane_b < G && b.segment != b.plane_a && b.segment != b.plane_b && b.plane_a != b.plane_b &&
+                 report.primitive_of_segment[size_t(b.segment)] &&
+                 primitive_is_valid(*report.primitive_of_segment[size_t(b.segment)]));
     grow.threads = 2;
     FUZZ_CHECK(segment_by_primitive_growing(m, adj, grow, again) == G && again == grown);
     if (grow.roughness <= 0) {

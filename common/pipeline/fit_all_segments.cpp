@@ -43,7 +43,8 @@ void drop_relations_of(FitAllSegmentsResult& out, int s)
 } // namespace
 
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
-                        const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options)
+                        const std::vector<SegmentContact>& contacts, const std::vector<SegmentBlendRecord>& given_blends,
+                        const FitAllSegmentsOptions& options)
 {
   const RelatedPrimitives related = relate_primitives(out.primitives, samples, contacts, out.roughness,
                                                       options.relation_options, {}, options.threads);
@@ -79,7 +80,8 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
   // Fillets and chamfers, given the planes they join as the relations hold them; a fillet's relations are its
   // tangencies.
   for (const SegmentEdgeBlend& b :
-       fit_edge_blends(out.primitives, samples, contacts, out.roughness, options.tolerance, options.types)) {
+       fit_edge_blends(out.primitives, samples, contacts, out.roughness, options.tolerance, options.types,
+                       given_blends)) {
     if (!take_primitive(out, samples, b.segment, b.primitive))
       continue;
     out.blends.push_back(b);

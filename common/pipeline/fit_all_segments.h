@@ -20,7 +20,8 @@
 // Method: surface_roughness (options.roughness, or kept on the mesh by the segmentation, else estimated;
 //         automatic tolerance or relations), gather_segment_samples, fit_segments and relate_primitives (both
 //         on options.threads; segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends
-//         (with the same contacts), snap_segments (its fold repair on options.threads too).
+//         (with the same contacts, and the blends the segmentation kept on the mesh, segment_blends_attribute.h),
+//         snap_segments (its fold repair on options.threads too).
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
 #ifndef PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
 #define PRIMITIVE_EDIT_FIT_ALL_SEGMENTS_H
@@ -30,6 +31,7 @@
 #include "common/mesh/count_segments.h"
 #include "common/mesh/surface_roughness_attribute.h"
 #include "common/mesh/gather_segment_samples.h"
+#include "common/mesh/segment_blends_attribute.h"
 #include "common/mesh/segment_primitive_attribute.h"
 #include "common/mesh/update_normals_and_bounds.h"
 #include "common/mesh/segment_contacts.h"
@@ -94,7 +96,8 @@ bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>
 // chamfers between planes (fit_edge_blends; a fillet's relations are its tangencies, a chamfer has none). A failed
 // status when relate_primitives refuses.
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,
-                        const std::vector<SegmentContact>& contacts, const FitAllSegmentsOptions& options);
+                        const std::vector<SegmentContact>& contacts, const std::vector<SegmentBlendRecord>& given_blends,
+                        const FitAllSegmentsOptions& options);
 
 } // namespace fit_all_detail
 
@@ -123,7 +126,17 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
   if (options.tolerance == 0)
     fit_options.roughness = out.roughness;
   const std::vector<SegmentSamples> samples = gather_segment_samples(m, segment_of_face, count, options.threads);
-  out.fits = fit_segments(samples, options.types, fit_options, options.threads,
+  // The segmentation's blends join planes: their planes are fitted as planes, unless a type was asked.
+  const std::vector<SegmentBlendRecord> given_blends = read_segment_blends(m, segment_of_face);
+  std::vector<std::optional<PrimitiveType>> types = options.types;
+  for (const SegmentBlendRecord& b : given_blends)
+    for (int plane : {b.plane_a, b.plane_b})
+      if (plane >= 0 && plane < count) {
+        types.resize(std::max(types.size(), std::size_t(count)));
+        if (!types[std::size_t(plane)])
+          types[std::size_t(plane)] = PrimitiveType::Plane;
+      }
+  out.fits = fit_segments(samples, types, fit_options, options.threads,
                           progress_range(progress, 0, options.snap ? 80 : 100));
   out.primitives.resize(size_t(count));
   for (int s = 0; s < count; ++s) {
@@ -145,7 +158,7 @@ FitAllSegmentsResult fit_all_segments(MeshType& m, const std::vector<int>& segme
     t0 = Clock::now();
     report_progress(progress, options.snap ? 80 : 95, "Relating primitives");
     const Status related =
-        fit_all_detail::relate_and_blend(out, samples, segment_contacts(m, segment_of_face), options);
+        fit_all_detail::relate_and_blend(out, samples, segment_contacts(m, segment_of_face), given_blends, options);
     if (!related) {
       out.status = related;
       return out;

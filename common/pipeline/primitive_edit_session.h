@@ -165,8 +165,10 @@ public:
     const int k = segment_by_primitive_growing(*mesh_, adjacency_, with_roughness, labels, &report, progress);
     char tolerance[64];
     std::snprintf(tolerance, sizeof tolerance, "%.4g (roughness %.4g)", report.tolerance, report.roughness);
-    return replace_segmentation(std::move(labels), std::to_string(k) + " segments by primitive fit, tolerance " +
-                                                       tolerance);
+    EditOutcome done = replace_segmentation(std::move(labels), std::to_string(k) + " segments by primitive fit, "
+                                                                                   "tolerance " + tolerance);
+    write_segment_blends(*mesh_, labels_, report.blends);
+    return done;
   }
 
   // Picks the segment of a face: alone, or (additive) added to / removed from the picked ones. A face with no

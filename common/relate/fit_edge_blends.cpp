@@ -16,7 +16,7 @@ namespace {
 std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primitive& pa, const Primitive& pb,
                                               const SegmentContact& with_a, const SegmentContact& with_b,
                                               const FitSample& samples, double cap,
-                                              const std::optional<PrimitiveType>& type)
+                                              const std::optional<PrimitiveType>& type, bool given = false)
 {
   // Each border lies on its plane's kept half, beyond the edge as seen from the other border.
   const Eigen::Vector3d& ma = with_a.mean;
@@ -27,7 +27,7 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
   const double ta = distance_along(*section, section->ray_a, with_a.mean);
   const double tb = distance_along(*section, section->ray_b, with_b.mean);
   const double setback = 0.5 * (ta + tb);
-  if (!(ta > 0 && tb > 0) || !(std::abs(ta - tb) <= std::max(cap, kEdgeBlendBorderShare * setback)))
+  if (!(ta > 0 && tb > 0) || !(given || std::abs(ta - tb) <= std::max(cap, kEdgeBlendBorderShare * setback)))
     return std::nullopt;
   std::optional<SegmentEdgeBlend> best;
   for (BlendForm form : {BlendForm::Fillet, BlendForm::Chamfer}) {
@@ -47,7 +47,8 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
     if (in_edge_blend_sector(*section, setback, samples.points.row(i).transpose()))
       inside += samples.weights[i];
   }
-  if (!(inside >= kEdgeBlendSectorShare * all) || !primitive_is_valid(best->primitive))
+  if (!(inside >= (given ? kGivenEdgeBlendSectorShare : kEdgeBlendSectorShare) * all) ||
+      !primitive_is_valid(best->primitive))
     return std::nullopt;
   return best;
 }
@@ -78,12 +79,37 @@ std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::opti
   return chosen;
 }
 
+// The blend the record gives segment r.segment, when it still touches both planes, each border lies on its plane's
+// kept half and kGivenEdgeBlendSectorShare of it lies between the tangent lines.
+std::optional<SegmentEdgeBlend> given_blend(const SegmentBlendRecord& r,
+                                            const std::vector<std::optional<Primitive>>& primitives,
+                                            const SegmentSamples& samples,
+                                            const std::vector<const SegmentContact*>& touching, double roughness,
+                                            double tolerance, const std::optional<PrimitiveType>& type)
+{
+  const SegmentContact *with_a = nullptr, *with_b = nullptr;
+  for (const SegmentContact* c : touching) {
+    const int other = c->a == r.segment ? c->b : c->a;
+    with_a = other == r.plane_a ? c : with_a;
+    with_b = other == r.plane_b ? c : with_b;
+  }
+  if (!with_a || !with_b)
+    return std::nullopt;
+  const std::optional<OwnFitScore> own =
+      score_own_fit(samples, primitives[std::size_t(r.segment)], kEdgeBlendPoints, roughness, tolerance);
+  if (!own)
+    return std::nullopt;
+  return blend_between(r.segment, r.plane_a, r.plane_b, *primitives[std::size_t(r.plane_a)],
+                       *primitives[std::size_t(r.plane_b)], *with_a, *with_b, own->sample, own->cap, type, true);
+}
+
 } // namespace
 
 std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Primitive>>& primitives,
                                               const std::vector<SegmentSamples>& samples,
                                               const std::vector<SegmentContact>& contacts, double roughness,
-                                              double tolerance, const std::vector<std::optional<PrimitiveType>>& types)
+                                              double tolerance, const std::vector<std::optional<PrimitiveType>>& types,
+                                              const std::vector<SegmentBlendRecord>& given)
 {
   const int count = int(std::min(primitives.size(), samples.size()));
   auto is_plane = [&](int k) {
@@ -99,24 +125,38 @@ std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Pr
     if (is_plane(c.a))
       planes_of[std::size_t(c.b)].push_back(&c);
   }
+  auto type_of = [&](int s) { return std::size_t(s) < types.size() ? types[std::size_t(s)] : std::nullopt; };
+  enum Role : char { kNone, kBlend, kBlendsPlane };
+  std::vector<char> role(std::size_t(std::max(count, 0)), kNone);
+  std::vector<SegmentEdgeBlend> out;
+  for (const SegmentBlendRecord& r : given) {
+    if (r.segment < 0 || r.segment >= count || !is_plane(r.plane_a) || !is_plane(r.plane_b) ||
+        role[std::size_t(r.segment)] != kNone || role[std::size_t(r.plane_a)] == kBlend ||
+        role[std::size_t(r.plane_b)] == kBlend)
+      continue;
+    const std::optional<SegmentEdgeBlend> blend = given_blend(r, primitives, samples[std::size_t(r.segment)],
+                                                              planes_of[std::size_t(r.segment)], roughness,
+                                                              tolerance, type_of(r.segment));
+    if (!blend)
+      continue;
+    role[std::size_t(r.segment)] = kBlend;
+    role[std::size_t(r.plane_a)] = role[std::size_t(r.plane_b)] = kBlendsPlane;
+    out.push_back(*blend);
+  }
   std::vector<SegmentEdgeBlend> candidates;
   for (int s = 0; s < count; ++s) {
-    if (planes_of[std::size_t(s)].size() < 2)
+    if (planes_of[std::size_t(s)].size() < 2 || role[std::size_t(s)] != kNone)
       continue;
     const std::optional<OwnFitScore> own =
         score_own_fit(samples[std::size_t(s)], primitives[std::size_t(s)], kEdgeBlendPoints, roughness, tolerance);
     if (!own)
       continue;
     if (std::optional<SegmentEdgeBlend> blend =
-            best_blend_of(s, primitives, *own, planes_of[std::size_t(s)],
-                          std::size_t(s) < types.size() ? types[std::size_t(s)] : std::nullopt))
+            best_blend_of(s, primitives, *own, planes_of[std::size_t(s)], type_of(s)))
       candidates.push_back(*blend);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const SegmentEdgeBlend& x, const SegmentEdgeBlend& y) { return x.setback < y.setback; });
-  enum Role : char { kNone, kBlend, kBlendsPlane };
-  std::vector<char> role(std::size_t(std::max(count, 0)), kNone);
-  std::vector<SegmentEdgeBlend> out;
   for (const SegmentEdgeBlend& c : candidates) {
     if (role[std::size_t(c.segment)] != kNone || role[std::size_t(c.plane_a)] == kBlend ||
         role[std::size_t(c.plane_b)] == kBlend)

@@ -3,9 +3,9 @@
 //
 // Input:  per segment its primitive after the relations' refit (std::nullopt: free-form) and its samples
 //         (gather_segment_samples.h), the segments' contacts (segment_contacts.h), the scan's roughness and the
-//         fit tolerance (0: automatic, as fit_primitive_auto.h takes it), and the types asked per segment (may be
+//         fit tolerance (0: automatic, as fit_primitive_auto.h takes it), the types asked per segment (may be
 //         empty; a segment asked to be a cylinder can only be a fillet, a plane only a chamfer, other types
-//         neither).
+//         neither) and the blends given (may be empty).
 // Output: one SegmentEdgeBlend per segment given a blend: the segment, its two planes, the section, the form, the
 //         setback, the blend's surface and its RMS. The caller replaces the segments' primitives.
 // Method: on a rough scan a fillet or chamfer narrower than a few times the roughness is at the noise floor of a
@@ -27,6 +27,13 @@
 //         either their blend or a plane with blends on both sides (a 3 mm wall between a fillet and a chamfer
 //         scores as a large fillet of them too): the candidates are taken narrowest first, and a segment that
 //         is already a blend's plane, or whose planes are blends, is skipped.
+//         Blends given (the segmentation's, segment_blends_attribute.h) come first and need no test of their fit:
+//         the segmentation found them against the sharp edge by the scan's own scatter, which a blend's RMS
+//         cannot show when the blend stands off its edge by less than the roughness. A given blend is taken when
+//         its segment still touches both planes, they are still planes, its borders lie on their planes' kept
+//         halves and kGivenEdgeBlendSectorShare of it between its tangent lines (the relations may have moved the
+//         planes since it was carved between them; its borders need not agree); its planes are then no
+//         candidates (a wall between a given blend and another plane is not their blend).
 // Cost:   O(contacts) to list each segment's planes, then per segment O(kEdgeBlendPoints) for its own RMS and per
 //         pair of its planes whose borders agree O(kEdgeBlendPoints) for each form.
 #ifndef PRIMITIVE_EDIT_FIT_EDGE_BLENDS_H
@@ -35,6 +42,7 @@
 #include "common/base/primitive.h"
 #include "common/geometry/edge_blend.h"
 #include "common/mesh/gather_segment_samples.h"
+#include "common/mesh/segment_blends_attribute.h"
 #include "common/mesh/segment_contacts.h"
 
 #include <optional>
@@ -46,6 +54,8 @@ constexpr Eigen::Index kEdgeBlendPoints = 2000; // samples of a segment its blen
 constexpr double kEdgeBlendSectorShare = 0.7;
 constexpr double kEdgeBlendBorderShare = 0.5;
 constexpr double kEdgeBlendRmsRatio = 1.25;
+// A given blend's sector share: the planes were refitted (relations) since its faces were carved between them.
+constexpr double kGivenEdgeBlendSectorShare = 0.5;
 
 struct SegmentEdgeBlend
 {
@@ -60,7 +70,8 @@ std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Pr
                                               const std::vector<SegmentSamples>& samples,
                                               const std::vector<SegmentContact>& contacts, double roughness,
                                               double tolerance,
-                                              const std::vector<std::optional<PrimitiveType>>& types = {});
+                                              const std::vector<std::optional<PrimitiveType>>& types = {},
+                                              const std::vector<SegmentBlendRecord>& given = {});
 
 } // namespace primitive_edit
 

@@ -46,22 +46,27 @@
 //            neighbouring region whose primitive explains it best (growth within the tolerance lets a
 //            plane take the tangent start of a fillet). Components with no region at all become one
 //            segment each.
-//         On a scan whose roughness is comparable to the size of its small features (fillets of radius
-//         about the tolerance), those features go to the surfaces around them, split at the nearest one.
+//         5. on a scan whose roughness is comparable to the size of its small features, a fillet or chamfer
+//            that stands off its sharp edge by less than the tolerance went to the two planes it joins, split
+//            at their bisector: each pair of adjacent plane regions is tested for one by the likelihood of its
+//            faces under the scan's own scatter (carve_edge_blends.h), and a blend found becomes a segment of
+//            its own. The report lists them; the filter keeps them on the mesh for Fit All
+//            (segment_blends_attribute.h), which makes them the blends of their planes.
 // Phases: growing_faces.h (normals, the face tests), grow_regions.h (step 2), merge_regions.h and
-//         dissolve_rough_regions.h (step 3), assign_leftover_faces.h and relax_region_borders.h (step 4); each
-//         is timed in the report.
+//         dissolve_rough_regions.h (step 3), assign_leftover_faces.h and relax_region_borders.h (step 4),
+//         carve_edge_blends.h (step 5); each is timed in the report.
 // Output: segment_of_face (indexed by vcg::tri::Index): dense ids 0..K-1, -1 for deleted faces. Returns K.
 //         The optional report holds the tolerance used, the roughness, each segment's primitive
-//         (std::nullopt for a segment no primitive was grown for, in the form snap_segments.h takes) and
-//         each phase's wall-clock time.
+//         (std::nullopt for a segment no primitive was grown for, in the form snap_segments.h takes), the
+//         segments carved as blends with their two planes, and each phase's wall-clock time.
 //         Faces without a defined normal (zero area, NaN/Inf coordinates) never seed or grow a region; the
 //         final flood gives them the label of a neighbour.
 // Complexity: O(F log F) time (the final priority flood; the seed order is sorted bucket by bucket); growth
 //         visits each face O(1) times per refit of its region, and refits happen at geometric size steps on
 //         subsamples of at most kFitSampleCount faces, so fitting costs O(regions * log F * kFitSampleCount).
 //         Merging refits each tested pair on kFitSampleCount faces and checks kShareSampleCount faces of each
-//         region, per round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). O(F) memory.
+//         region, per round: O(region adjacencies * rounds * (kFitSampleCount + kShareSampleCount)). The blends:
+//         O(faces near the planes' shared borders + plane pairs * kBlendPoints * setbacks tried). O(F) memory.
 #ifndef PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 #define PRIMITIVE_EDIT_SEGMENT_BY_PRIMITIVE_GROWING_H
 
@@ -74,7 +79,9 @@
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/estimate_surface_roughness.h"
 #include "common/mesh/face_adjacency.h"
+#include "common/mesh/segment_blends_attribute.h"
 #include "common/segment/assign_leftover_faces.h"
+#include "common/segment/carve_edge_blends.h"
 #include "common/segment/dissolve_rough_regions.h"
 #include "common/segment/grow_regions.h"
 #include "common/segment/growing_faces.h"
@@ -129,6 +136,7 @@ struct SegmentByPrimitiveGrowingReport
   double roughness = 0;  // estimated RMS of the surface about local planes
   int grown_regions = 0; // regions grown before merging and dissolving
   std::vector<std::optional<Primitive>> primitive_of_segment;
+  std::vector<SegmentBlendRecord> blends;  // segments carved as the fillet or chamfer of two plane segments
   std::vector<SegmentPhaseTime> phase_times;
 };
 
@@ -216,6 +224,9 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("assign");
   relax_region_borders(g, adj, regions.primitive, scale.tolerance, label);
   clock.lap("relax");
+  report_progress(progress, 90, "Finding fillets and chamfers between planes");
+  const std::vector<CarvedBlend> blends = carve_edge_blends(g, adj, regions.primitive, scale, label, params.threads);
+  clock.lap("blends");
 
   // Compact ids in order of first appearance, keeping each one's primitive.
   segment_of_face = label;
@@ -225,11 +236,21 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
     report->roughness = roughness;
     report->grown_regions = grown;
     report->primitive_of_segment.assign(std::size_t(K), std::nullopt);
+    std::vector<int> segment_of_label(std::size_t(*std::max_element(label.begin(), label.end()) + 1), -1);
     for (int f = 0; f < face_count; ++f) {
       const int old = label[std::size_t(f)];
-      if (old >= 0 && old < grown)
+      if (old < 0)
+        continue;
+      segment_of_label[std::size_t(old)] = segment_of_face[std::size_t(f)];
+      if (old < grown)
         report->primitive_of_segment[std::size_t(segment_of_face[std::size_t(f)])] =
             regions.primitive[std::size_t(old)];
+    }
+    for (const CarvedBlend& b : blends) {
+      const SegmentBlendRecord r{segment_of_label[std::size_t(b.label)], segment_of_label[std::size_t(b.plane_a)],
+                                 segment_of_label[std::size_t(b.plane_b)]};
+      report->primitive_of_segment[std::size_t(r.segment)] = b.primitive;
+      report->blends.push_back(r);
     }
   }
   report_progress(progress, 100, "Segmentation done");
