@@ -6,8 +6,9 @@ The segmentation is greedy (seeds in order of flatness, regions grown and merged
 that lies near a threshold can go either way under a perturbation far below the scan's noise, and with it a
 few segments. Copy 0 is the scan itself; copy k moves every vertex coordinate by a uniform random amount in
 [-A, A] (seed k). Per copy: `bench_segment_parts --runs 1 --threads 1` segments it (segments, and with --truth
-the share of the area labelled right), `bench_segment_scan --labels` fits and snaps those segments as Fit All
-does, and `measure_scan` measures the snapped copy against the reference (share within 0.42 mm, mean).
+the share of the area labelled right), `bench_segment_scan --runs 1 --threads 1` segments it the same way and
+fits and snaps the segments as Fit All does after it (with the blends the segmentation found), and
+`measure_scan` measures the snapped copy against the reference (share within 0.42 mm, mean).
 Printed per copy, then the median, lowest and highest of each figure over the copies.
 
 Usage: /usr/bin/python3 bench/perturbed_runs.py SCAN.ply [--truth TRUTH.ply] [--copies 6] [--amplitude 1e-6]
@@ -80,16 +81,16 @@ def number(pattern, text, what):
 def one_copy(args, scan, work):
     """(segments, labelled % or None, within %, mean mm) of the pipeline on one copy."""
     bench = os.path.join(args.build, "bench")
-    segmented, snapped = os.path.join(work, "segmented.ply"), os.path.join(work, "snapped.ply")
-    for old in (segmented, snapped):  # so that a step that writes nothing cannot pass on the last copy's file
-        if os.path.exists(old):
-            os.remove(old)
-    cmd = [os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1", "--segmented",
-           segmented]
+    snapped = os.path.join(work, "snapped.ply")
+    if os.path.exists(snapped):  # so that a step that writes nothing cannot pass on the last copy's file
+        os.remove(snapped)
+    cmd = [os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1"]
     text = run(cmd + ["--truth", args.truth] if args.truth else cmd)
     segments = number(r"segments (\d+)\n", text, "segment count")
     labelled = number(r"labelled ([\d.]+)%", text, "labelled share") if args.truth else None
-    run([os.path.join(bench, "bench_segment_scan"), scan, "--labels", segmented, "--snapped", snapped])
+    # Segmented again in the same process as Fit All (the same segmentation: it is deterministic), as the filters
+    # run in one MeshLab: Fit All gets the segmentation's blends from the mesh (segment_blends_attribute.h).
+    run([os.path.join(bench, "bench_segment_scan"), scan, "--runs", "1", "--threads", "1", "--snapped", snapped])
     text = run([os.path.join(bench, "bracket", "measure_scan"), snapped, args.reference])
     within = number(r"([\d.]+)% within", text, "accuracy")
     mean = number(r"mean ([\d.]+) mm", text, "mean distance")
