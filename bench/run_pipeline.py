@@ -44,7 +44,8 @@ FIT_ALL = "Primitive: Fit All Segments"
 # name -> [(parameter, default, Rich type)].
 SEGMENTATIONS = {
     "Segment: Auto by Primitive Fit": [("Tolerance", 0.0, "RichFloat"), ("NormalAngle", 30.0, "RichFloat"),
-                                       ("SeedPatchFaces", 60, "RichInt"), ("NormalSmoothing", 10, "RichInt")],
+                                       ("SeedPatchFaces", 60, "RichInt"), ("NormalSmoothing", 10, "RichInt"),
+                                       ("CarveBlends", True, "RichBool")],
     "Segment: Auto by Normal Angle": [("Angle", 20.0, "RichFloat"), ("NormalSmoothing", -1, "RichInt"),
                                       ("MinSegmentFaces", -1, "RichInt")],
 }

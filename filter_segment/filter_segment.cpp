@@ -174,6 +174,11 @@ void SegmentFilters::parameters(int id, MeshDocument& document, ParameterList& p
                             "patch are taken for rounded edges (at least 8).");
     parlst.addInt("NormalSmoothing", growing.smoothing_iterations, "Normal Smoothing Steps",
                             "Passes of face normal averaging against scan noise.");
+    parlst.addBool("CarveBlends", growing.carve_blends, "Carve Fillets and Chamfers",
+                   "Fillets and chamfers that the scan's roughness hid in the two planes they join become "
+                   "segments of their own, when the faces about the edge are clearly likelier under a blend "
+                   "than under a sharp edge; Fit All Segments then makes them the blends of their planes. "
+                   "Waves of the roughness as long as a blend can read as one: turn it off on such a scan.");
     break;
   }
   case SEGMENT_SPLIT_BY_PLANE:
@@ -258,6 +263,7 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   params.normal_angle_deg = parlst.getFloat("NormalAngle");
   params.seed_patch_faces = parlst.getInt("SeedPatchFaces");
   params.smoothing_iterations = parlst.getInt("NormalSmoothing");
+  params.carve_blends = parlst.getBool("CarveBlends");
   if (const Status bad = check_primitive_growing_params(params); !bad)
     return fail(name + ": " + QString::fromStdString(bad.error));
 

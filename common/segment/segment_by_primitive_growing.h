@@ -51,7 +51,8 @@
 //            at their bisector: each pair of adjacent plane regions is tested for one by the likelihood of its
 //            faces under the scan's own scatter (carve_edge_blends.h), and a blend found becomes a segment of
 //            its own. The report lists them; the filter keeps them on the mesh for Fit All
-//            (segment_blends_attribute.h), which makes them the blends of their planes.
+//            (segment_blends_attribute.h), which makes them the blends of their planes. Off with
+//            params.carve_blends = false (long waves of the roughness can read as a blend: its Limits).
 // Phases: growing_faces.h (normals, the face tests), grow_regions.h (step 2), merge_regions.h and
 //         dissolve_rough_regions.h (step 3), assign_leftover_faces.h and relax_region_borders.h (step 4),
 //         carve_edge_blends.h (step 5); each is timed in the report.
@@ -108,6 +109,7 @@ struct SegmentByPrimitiveGrowingParams
   int seed_patch_faces = 60;
   int min_region_faces = 0;      // <= 0: seed_patch_faces
   int smoothing_iterations = 10;
+  bool carve_blends = true;      // step 5: fillets and chamfers hidden in their planes become segments
   double roughness = 0;          // the scan's roughness when already known (surface_roughness_attribute.h);
                                  // <= 0 or not finite: estimated
   int threads = 0;               // for the face tables, the seed order, the roughness and the merge tests (<= 0:
@@ -224,8 +226,11 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("assign");
   relax_region_borders(g, adj, regions.primitive, scale.tolerance, label);
   clock.lap("relax");
-  report_progress(progress, 90, "Finding fillets and chamfers between planes");
-  const std::vector<CarvedBlend> blends = carve_edge_blends(g, adj, regions.primitive, scale, label, params.threads);
+  std::vector<CarvedBlend> blends;
+  if (params.carve_blends) {
+    report_progress(progress, 90, "Finding fillets and chamfers between planes");
+    blends = carve_edge_blends(g, adj, regions.primitive, scale, label, params.threads);
+  }
   clock.lap("blends");
 
   // Compact ids in order of first appearance, keeping each one's primitive.

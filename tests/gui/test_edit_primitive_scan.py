@@ -33,7 +33,8 @@ FILTER = "Segment: Auto by Primitive Fit"
 # Every parameter at its default (filter_segment.cpp, SegmentByPrimitiveGrowingParams), as meshlabserver
 # 2020.09 aborts unless a script lists them all; the same list as bench/run_pipeline.py.
 DEFAULTS = [param("Tolerance", 0, "RichFloat"), param("NormalAngle", 30, "RichFloat"),
-            param("SeedPatchFaces", 60, "RichInt"), param("NormalSmoothing", 10, "RichInt")]
+            param("SeedPatchFaces", 60, "RichInt"), param("NormalSmoothing", 10, "RichInt"),
+            param("CarveBlends", True, "RichBool")]
 DEADLINE = time.time() + 240
 
 

@@ -34,7 +34,8 @@ METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
 # (name, params, ours): every parameter listed by name, as meshlabserver 2020.09 requires.
 FILTERS = [
     ("Segment: Auto by Primitive Fit", [param("Tolerance", 0, "RichFloat"), param("NormalAngle", 30, "RichFloat"),
-                                        param("SeedPatchFaces", 20, "RichInt"), param("NormalSmoothing", 2, "RichInt")],
+                                        param("SeedPatchFaces", 20, "RichInt"), param("NormalSmoothing", 2, "RichInt"),
+                                        param("CarveBlends", True, "RichBool")],
      True),
     ("Segment: Auto by Normal Angle", [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 1, "RichInt"),
                                        param("MinSegmentFaces", 0, "RichInt")], True),

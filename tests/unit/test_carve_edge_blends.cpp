@@ -7,6 +7,7 @@
 #include "common/base/constants.h"
 #include "common/mesh/segment_blends_attribute.h"
 #include "common/pipeline/fit_all_segments.h"
+#include "common/segment/carve_edge_blends.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
 #include "test_mesh.h"
@@ -42,11 +43,12 @@ void carve_profile_at(double r, double u, double& y, double& z, double& ny, doub
   }
 }
 
-// The rough plate edge; truth[f] = 1 for the faces whose noise-free centroid lies on the fillet, else 0.
-void make_rough_plate_edge(TMesh& m, double r, std::vector<int>& truth)
+// The rough plate edge, its side `side` mm tall; truth[f] = 1 for the faces whose noise-free centroid lies on the
+// fillet, else 0.
+void make_rough_plate_edge(TMesh& m, double r, std::vector<int>& truth, double side = kCarveFace)
 {
   m.Clear();
-  const double length = 2 * (kCarveFace - r) + 0.5 * kPi * r;
+  const double length = (kCarveFace - r) + 0.5 * kPi * r + (side - r);
   const int nu = int(std::ceil(length / kCarveStep)), nx = int(std::ceil(kCarveLength / kCarveStep));
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -140,6 +142,39 @@ TEST(CarveEdgeBlends, RoughSharpEdgeKeepsTwoSegments)
   const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
   EXPECT_EQ(K, 2);
   EXPECT_TRUE(report.blends.empty());
+}
+
+// carve_edge_blends alone on the fillet's edge, labelled by hand: the top one plane region; the side a plane region
+// down to a depth, the rest of it a third. Down to 8 mm the fillet takes a
+// fifth of the side's region and is carved; down to 3 mm it would take over a third, a region whose plane its
+// faces bend, and it is not.
+TEST(CarveEdgeBlends, BlendTakingOverAThirdOfAPlaneIsNotCarved)
+{
+  TMesh m;
+  std::vector<int> truth;
+  make_rough_plate_edge(m, 1.5, truth);
+  std::vector<int> seg;
+  SegmentByPrimitiveGrowingReport report;
+  segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  const GrowingFaces g = growing_faces(m, adj, 0);
+  GrowingScale scale;
+  scale.tolerance = report.tolerance;
+  scale.min_region_faces = 60;
+  scale.min_curvature_radius = 0.5;
+  Primitive top, side, below;
+  top.type = side.type = below.type = PrimitiveType::Plane;
+  top.axis = Eigen::Vector3d::UnitZ();
+  side.axis = below.axis = Eigen::Vector3d::UnitY();
+  for (double depth : {8.0, 3.0}) {
+    std::vector<int> label(m.face.size());
+    for (std::size_t f = 0; f < label.size(); ++f) {
+      const Eigen::Vector3d& c = g.centroid[f];
+      label[f] = c.z() > c.y() ? 0 : c.z() > -depth ? 1 : 2; // split at the bisector, as growth leaves it
+    }
+    const std::vector<CarvedBlend> blends = carve_edge_blends(g, adj, {top, side, below}, scale, label, 1);
+    EXPECT_EQ(blends.size(), depth > 5 ? 1u : 0u) << "side region down to " << depth << " mm";
+  }
 }
 
 TEST(SegmentBlendsAttribute, ReadBackOnlyForTheSameVerticesAndSegments)
