@@ -10,6 +10,7 @@
 // segment's size and 3x the scan's roughness, estimate_surface_roughness.h).
 // --labels SEGMENTED.ply skips the segmentation and fits/snaps the segments given as face quality of that
 // PLY (the same scan, e.g. bench/true_segmentation.py's true surfaces: the ceiling of fit-and-snap).
+// --carve-blends 0 leaves the segmentation's step 5 out (the filter's CarveBlends; default 1: carve_edge_blends.h).
 // --relations 0 fits every segment alone (default 1: relations found and enforced, relate_primitives.h);
 // --relation-angle DEG and --relation-cost SHARE set RelationOptions.
 // --types TYPES.txt (lines "SEGMENT_ID TYPE", e.g. from true_segmentation.py --types) fits each listed segment
@@ -31,7 +32,7 @@
 // --threads N runs the segmentation and Fit All on N threads (default 0: every hardware thread); the outputs are
 // the same on any count.
 // Usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM]
-//        [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply]
+//        [--carve-blends 0|1] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply]
 //        [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]
 #include "bracket/bracket_mesh.h"
 
@@ -212,6 +213,8 @@ std::optional<Args> parse_args(int argc, char** argv)
       read = read_switch("--wide-repair", argv[++i], g.wide_repair);
     else if (a == "--relations" && has_value)
       read = read_switch("--relations", argv[++i], g.relations);
+    else if (a == "--carve-blends" && has_value)
+      read = read_switch("--carve-blends", argv[++i], g.params.carve_blends);
     else if (a == "--relation-angle" && has_value)
       read = read_number("--relation-angle", argv[++i], g.relation_options.angle_deg);
     else if (a == "--relation-cost" && has_value)
@@ -386,7 +389,7 @@ int main(int argc, char** argv)
   const std::optional<Args> parsed = parse_args(argc, argv);
   if (!parsed) {
     std::fprintf(stderr, "usage: bench_segment_scan SCAN.ply [--runs N] [--tolerance MM] [--angle DEG] [--smoothing N] [--fit-tolerance MM] "
-                         "[--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--wide-repair 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
+                         "[--carve-blends 0|1] [--relations 0|1] [--repair 0|1] [--prevent-flips 0|1] [--wide-repair 0|1] [--relation-angle DEG] [--relation-cost SHARE] [--method 0|1|2] [--labels SEGMENTED.ply] [--types TYPES.txt] [--primitives PRIMS.txt] [--segmented OUT.ply] [--fits OUT.json] [--snapped OUT.ply] [--fit-runs N] [--threads N]\n");
     return 2;
   }
   const Args& g = *parsed;
