@@ -41,6 +41,7 @@ void run(Decoder& in)
     grow.min_region_faces = int(in.u8() % 80) - 1;
     grow.smoothing_iterations = in.u8() % 12;
     grow.roughness = in.bit() ? 0.0 : std::abs(in.special(0.05));
+    grow.carve_blends = !in.bit();
   }
   grow.threads = 1;
   std::vector<int> grown, again;

@@ -98,14 +98,20 @@ void carved_fillet_overlap(const std::vector<int>& seg, const std::vector<int>& 
   precision = in_s ? double(both) / in_s : 0;
 }
 
+// The rough plate edge with a fillet of radius r (0: sharp), segmented at the defaults; returns the segment count.
+int segment_rough_plate_edge(TMesh& m, double r, std::vector<int>& truth, std::vector<int>& seg,
+                             SegmentByPrimitiveGrowingReport& report)
+{
+  make_rough_plate_edge(m, r, truth);
+  return segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+}
+
 TEST(CarveEdgeBlends, RoughFilletBecomesItsOwnSegmentAndFitAllKeepsItABlend)
 {
   TMesh m;
-  std::vector<int> truth;
-  make_rough_plate_edge(m, 1.5, truth);
-  std::vector<int> seg;
+  std::vector<int> truth, seg;
   SegmentByPrimitiveGrowingReport report;
-  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+  const int K = segment_rough_plate_edge(m, 1.5, truth, seg, report);
   // The fillet stands 0.44 mm off the sharp edge, about the tolerance: growth gives it to its planes.
   EXPECT_GT(report.tolerance, 0.4);
   ASSERT_EQ(report.blends.size(), 1u) << K << " segments";
@@ -135,12 +141,9 @@ TEST(CarveEdgeBlends, RoughFilletBecomesItsOwnSegmentAndFitAllKeepsItABlend)
 TEST(CarveEdgeBlends, RoughSharpEdgeKeepsTwoSegments)
 {
   TMesh m;
-  std::vector<int> truth;
-  make_rough_plate_edge(m, 0.0, truth);
-  std::vector<int> seg;
+  std::vector<int> truth, seg;
   SegmentByPrimitiveGrowingReport report;
-  const int K = segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
-  EXPECT_EQ(K, 2);
+  EXPECT_EQ(segment_rough_plate_edge(m, 0.0, truth, seg, report), 2);
   EXPECT_TRUE(report.blends.empty());
 }
 
@@ -151,11 +154,9 @@ TEST(CarveEdgeBlends, RoughSharpEdgeKeepsTwoSegments)
 TEST(CarveEdgeBlends, BlendTakingOverAThirdOfAPlaneIsNotCarved)
 {
   TMesh m;
-  std::vector<int> truth;
-  make_rough_plate_edge(m, 1.5, truth);
-  std::vector<int> seg;
+  std::vector<int> truth, seg;
   SegmentByPrimitiveGrowingReport report;
-  segment_by_primitive_growing(m, SegmentByPrimitiveGrowingParams(), seg, &report);
+  segment_rough_plate_edge(m, 1.5, truth, seg, report);
   const FaceAdjacency adj = build_face_adjacency(m);
   const GrowingFaces g = growing_faces(m, adj, 0);
   GrowingScale scale;

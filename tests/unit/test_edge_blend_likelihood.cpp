@@ -6,6 +6,8 @@
 #include "common/geometry/edge_blend.h"
 #include "common/geometry/edge_blend_likelihood.h"
 
+#include "test_fit_data.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,19 +17,11 @@ namespace {
 
 using namespace primitive_edit;
 
-Primitive likelihood_plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
-{
-  Primitive p;
-  p.type = PrimitiveType::Plane;
-  p.origin = point;
-  p.axis = normal.normalized();
-  return p;
-}
 
 EdgeSection plate_edge()
 {
-  const std::optional<EdgeSection> e = edge_section(likelihood_plane({0, 0, 5}, {0, 0, 1}),
-                                                    likelihood_plane({0, 0, 0}, {0, -1, 0}), {20, 10, 5}, {20, 0, 2},
+  const std::optional<EdgeSection> e = edge_section(test_fit::make_plane({0, 0, 5}, {0, 0, 1}),
+                                                    test_fit::make_plane({0, 0, 0}, {0, -1, 0}), {20, 10, 5}, {20, 0, 2},
                                                     {20, 0, 5});
   EXPECT_TRUE(e.has_value());
   return *e;

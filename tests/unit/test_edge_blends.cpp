@@ -7,6 +7,8 @@
 #include "common/geometry/edge_blend.h"
 #include "common/relate/fit_edge_blends.h"
 
+#include "test_fit_data.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,14 +72,6 @@ SegmentSamples quarter_circle(double z0, double r, int n, double sigma, unsigned
       r * kPi / 2, n, sigma, seed);
 }
 
-Primitive plane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
-{
-  Primitive p;
-  p.type = PrimitiveType::Plane;
-  p.origin = point;
-  p.axis = normal.normalized();
-  return p;
-}
 
 SegmentContact contact(int a, int b, double y, double z)
 {
@@ -122,14 +116,14 @@ TopEdge top_edge(BlendForm form, double s, double sigma)
   e.samples.push_back(strip({0, 0}, {0, 5 - s}, {-1, 0}, 1500, sigma, 2));
   e.samples.push_back(form == BlendForm::Fillet ? quarter_circle(5, s, 2000, sigma, 3)
                                                 : strip({s, 5}, {0, 5 - s}, {-1, 1}, 2000, sigma, 3));
-  e.primitives = {plane({0, 0, 5}, {0, 0, 1}), plane({0, 0, 0}, {0, -1, 0}), own_fit(e.samples[2], sigma)};
+  e.primitives = {test_fit::make_plane({0, 0, 5}, {0, 0, 1}), test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(e.samples[2], sigma)};
   e.contacts = {contact(TopEdge::Top, TopEdge::Blend, s, 5), contact(TopEdge::Side, TopEdge::Blend, 0, 5 - s)};
   return e;
 }
 
 TEST(EdgeBlend, SectionAndBlendsOfAnExactEdge)
 {
-  const Primitive top = plane({0, 0, 5}, {0, 0, 1}), side = plane({0, 0, 0}, {0, -1, 0});
+  const Primitive top = test_fit::make_plane({0, 0, 5}, {0, 0, 1}), side = test_fit::make_plane({0, 0, 0}, {0, -1, 0});
   const std::optional<EdgeSection> e =
       edge_section(top, side, Eigen::Vector3d(3, 4, 5), Eigen::Vector3d(3, 0, 1), Eigen::Vector3d(7, 1, 1));
   ASSERT_TRUE(e);
@@ -151,7 +145,7 @@ TEST(EdgeBlend, SectionAndBlendsOfAnExactEdge)
   EXPECT_FALSE(in_edge_blend_sector(*e, 1.5, Eigen::Vector3d(0, 2, 5)));
   EXPECT_FALSE(in_edge_blend_sector(*e, 1.5, Eigen::Vector3d(0, 0, 3)));
   // Parallel planes meet in no edge; a kept point on the line says no side.
-  EXPECT_FALSE(edge_section(top, plane({0, 0, 0}, {0, 0.2, 1}), {3, 4, 5}, {3, 0, 1}, {0, 0, 0}));
+  EXPECT_FALSE(edge_section(top, test_fit::make_plane({0, 0, 0}, {0, 0.2, 1}), {3, 4, 5}, {3, 0, 1}, {0, 0, 0}));
   EXPECT_FALSE(edge_section(top, side, Eigen::Vector3d(3, 0, 5), Eigen::Vector3d(3, 0, 1), Eigen::Vector3d::Zero()));
   EXPECT_FALSE(edge_section(top, side, Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d(3, 0, 1),
                             Eigen::Vector3d::Zero()));
@@ -239,9 +233,9 @@ TEST(EdgeBlends, AWallBetweenTwoBlendsStaysAPlane)
       strip({0, 0.8}, {0, 3.5}, {-1, 0}, 1500, sigma, 3),  strip({0, 0.8}, {0.8, 0}, {-1, -1}, 800, sigma, 4),
       strip({0.8, 0}, {20.8, 0}, {0, -1}, 3000, sigma, 5)};
   std::vector<std::optional<Primitive>> primitives = {
-      plane({0, 0, 5}, {0, 0, 1}), fit_primitive(PrimitiveType::Plane, samples[Fillet].points, samples[Fillet].normals,
+      test_fit::make_plane({0, 0, 5}, {0, 0, 1}), fit_primitive(PrimitiveType::Plane, samples[Fillet].points, samples[Fillet].normals,
                                                  samples[Fillet].weights).primitive,
-      plane({0, 0, 0}, {0, -1, 0}), own_fit(samples[Chamfer], sigma), plane({0, 0, 0}, {0, 0, -1})};
+      test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(samples[Chamfer], sigma), test_fit::make_plane({0, 0, 0}, {0, 0, -1})};
   const std::vector<SegmentContact> contacts = {contact(Top, Fillet, 1.5, 5), contact(Fillet, Wall, 0, 3.5),
                                                 contact(Wall, Chamfer, 0, 0.8), contact(Chamfer, Bottom, 0.8, 0)};
   const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(primitives, samples, contacts, sigma, 0.0);
