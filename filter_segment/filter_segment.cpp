@@ -15,6 +15,7 @@
 #include "meshlab_api/load_segments.h"
 
 #include <QElapsedTimer>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +100,9 @@ QString segment_filter_info(int filter)
            "within <i>Tolerance</i> of its primitive whose normals agree with it, refitting as it grows; "
            "regions curved tighter than a seed patch (edges rounded by the scanner) are dissolved, and the "
            "faces left over go to the neighbouring region whose primitive is nearest, which splits a blurred "
-           "edge at its bisector." + storage;
+           "edge at its bisector. Then the fillets and chamfers that the roughness hid in the two planes they "
+           "join become segments of their own (Carve Fillets and Chamfers), which Fit All Segments makes the "
+           "blends of those planes." + storage;
   case SegmentFilters::SEGMENT_MERGE_SELECTED:
     return "Every segment touched by the face selection becomes one segment." + storage;
   case SegmentFilters::SEGMENT_SPLIT_BY_PLANE:
@@ -280,6 +283,13 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   write_segment_blends(mm.cm, segment_of_face, report.blends);  // Fit All makes them blends of their planes
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
+  if (!report.blends.empty()) {
+    QStringList carved;
+    for (const SegmentBlendRecord& b : report.blends)
+      carved << QString("%1 between %2 and %3").arg(b.segment).arg(b.plane_a).arg(b.plane_b);
+    run.logf("%s: %d fillets and chamfers carved from the planes they join: segment %s.", qUtf8Printable(name),
+             int(report.blends.size()), qUtf8Printable(carved.join("; segment ")));
+  }
   return Status::success();
 }
 
