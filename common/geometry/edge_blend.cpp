@@ -9,15 +9,11 @@
 
 namespace primitive_edit {
 
-namespace {
-
 Eigen::Vector3d in_section(const EdgeSection& e, const Eigen::Vector3d& p)
 {
   const Eigen::Vector3d q = p - e.origin;
   return q - e.direction * q.dot(e.direction);
 }
-
-} // namespace
 
 std::optional<PlanesLine> planes_line(const Primitive& a, const Primitive& b, const Eigen::Vector3d& near)
 {

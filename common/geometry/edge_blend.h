@@ -47,6 +47,9 @@ std::optional<PlanesLine> planes_line(const Primitive& a, const Primitive& b, co
 std::optional<EdgeSection> edge_section(const Primitive& a, const Primitive& b, const Eigen::Vector3d& kept_a,
                                         const Eigen::Vector3d& kept_b, const Eigen::Vector3d& near);
 
+// p in the section: from the section's origin, its component along the line removed.
+Eigen::Vector3d in_section(const EdgeSection& section, const Eigen::Vector3d& p);
+
 // How far p lies from the line along the plane of `ray` (negative: on the side cut away).
 double distance_along(const EdgeSection& section, const Eigen::Vector3d& ray, const Eigen::Vector3d& p);
 

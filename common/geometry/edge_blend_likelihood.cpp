@@ -88,12 +88,6 @@ double profile_density(const Profile& p, const Eigen::Vector3d& q, double sigma)
   return d;
 }
 
-Eigen::Vector3d in_section(const EdgeSection& e, const Eigen::Vector3d& p)
-{
-  const Eigen::Vector3d q = p - e.origin;
-  return q - e.direction * q.dot(e.direction);
-}
-
 bool within_reach(const EdgeSection& e, const Eigen::Vector3d& q, double reach)
 {
   return q.dot(e.ray_a) < reach && q.dot(e.ray_b) < reach;

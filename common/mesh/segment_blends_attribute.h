@@ -40,9 +40,9 @@ struct KeptSegmentBlends
 // FNV-1a over the segment ids, as vertex_positions_hash over the coordinates.
 inline std::uint64_t segment_ids_hash(const std::vector<int>& segment_of_face)
 {
-  std::uint64_t h = 1469598103934665603ull;
+  std::uint64_t h = kFnvOffsetBasis;
   for (int s : segment_of_face)
-    h = (h ^ std::uint64_t(std::uint32_t(s))) * 1099511628211ull;
+    h = (h ^ std::uint64_t(std::uint32_t(s))) * kFnvPrime;
   return h;
 }
 

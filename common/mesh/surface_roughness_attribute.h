@@ -30,13 +30,16 @@ struct KeptSurfaceRoughness
 
 constexpr const char* kSurfaceRoughnessAttributeName = "SurfaceRoughness";
 
+// FNV-1a's 64-bit offset basis and prime (vertex_positions_hash, segment_ids_hash in segment_blends_attribute.h).
+constexpr std::uint64_t kFnvOffsetBasis = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+
 // FNV-1a over every live vertex's coordinates (as doubles), a 64-bit word at a time: each step is a bijection of
 // the hash, so a change of one coordinate always changes it. Byte by byte it took 15 ms on the peer part's 500k
 // vertices, at each write and read of the attribute; a word at a time 2 ms.
 template <class MeshType>
 std::uint64_t vertex_positions_hash(const MeshType& m)
 {
-  std::uint64_t h = 1469598103934665603ull;
+  std::uint64_t h = kFnvOffsetBasis;
   for (const auto& v : m.vert) {
     if (v.IsD())
       continue;
@@ -45,7 +48,7 @@ std::uint64_t vertex_positions_hash(const MeshType& m)
       const double c = double(p[i]);
       std::uint64_t word;
       std::memcpy(&word, &c, sizeof word);
-      h = (h ^ word) * 1099511628211ull;
+      h = (h ^ word) * kFnvPrime;
     }
   }
   return h;
