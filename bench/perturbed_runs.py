@@ -9,7 +9,9 @@ few segments. Copy 0 is the scan itself; copy k moves every vertex coordinate by
 the share of the area labelled right), `bench_segment_scan --runs 1 --threads 1` segments it the same way and
 fits and snaps the segments as Fit All does after it (with the blends the segmentation found), and
 `measure_scan` measures the snapped copy against the reference (share within 0.42 mm, mean).
-Printed per copy, then the median, lowest and highest of each figure over the copies.
+Printed per copy, then the median, lowest and highest of each figure over the copies. With --keep DIR each copy's
+segmentation and snapped scan stay in DIR as copyK.segmented.ply and copyK.snapped.ply, to look at a copy that
+scores apart.
 
 Usage: /usr/bin/python3 bench/perturbed_runs.py SCAN.ply [--truth TRUTH.ply] [--copies 6] [--amplitude 1e-6]
        [--build build] [--reference bench/data/bracket_reference.ply] [--keep DIR]
@@ -78,19 +80,23 @@ def number(pattern, text, what):
     return float(m.group(1))
 
 
-def one_copy(args, scan, work):
-    """(segments, labelled % or None, within %, mean mm) of the pipeline on one copy."""
+def one_copy(args, scan, work, k):
+    """(segments, labelled % or None, within %, mean mm) of the pipeline on copy k."""
     bench = os.path.join(args.build, "bench")
-    snapped = os.path.join(work, "snapped.ply")
-    if os.path.exists(snapped):  # so that a step that writes nothing cannot pass on the last copy's file
-        os.remove(snapped)
+    out = args.keep or work
+    snapped = os.path.join(out, "copy%d.snapped.ply" % k)
+    segmented = os.path.join(out, "copy%d.segmented.ply" % k)
+    for path in (snapped, segmented):  # so that a step that writes nothing cannot pass on an earlier run's file
+        if os.path.exists(path):
+            os.remove(path)
     cmd = [os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1"]
     text = run(cmd + ["--truth", args.truth] if args.truth else cmd)
     segments = number(r"segments (\d+)\n", text, "segment count")
     labelled = number(r"labelled ([\d.]+)%", text, "labelled share") if args.truth else None
     # Segmented again in the same process as Fit All (the same segmentation: it is deterministic), as the filters
     # run in one MeshLab: Fit All gets the segmentation's blends from the mesh (segment_blends_attribute.h).
-    run([os.path.join(bench, "bench_segment_scan"), scan, "--runs", "1", "--threads", "1", "--snapped", snapped])
+    run([os.path.join(bench, "bench_segment_scan"), scan, "--runs", "1", "--threads", "1", "--snapped", snapped] +
+        (["--segmented", segmented] if args.keep else []))
     text = run([os.path.join(bench, "bracket", "measure_scan"), snapped, args.reference])
     within = number(r"([\d.]+)% within", text, "accuracy")
     mean = number(r"mean ([\d.]+) mm", text, "mean distance")
@@ -105,9 +111,12 @@ def main():
     p.add_argument("--amplitude", type=float, default=1e-6, help="largest move of a coordinate (default 1e-6)")
     p.add_argument("--build", default=os.path.join(REPO, "build"))
     p.add_argument("--reference", default=os.path.join(REPO, "bench", "data", "bracket_reference.ply"))
+    p.add_argument("--keep", help="folder that keeps each copy's copyK.segmented.ply and copyK.snapped.ply")
     args = p.parse_args()
     if args.copies < 0 or not args.amplitude > 0:
         raise SystemExit("perturbed_runs: --copies must be at least 0 and --amplitude positive")
+    if args.keep and not os.path.isdir(args.keep):
+        raise SystemExit("perturbed_runs: --keep %s is not a folder" % args.keep)
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for k in range(args.copies + 1):
@@ -115,7 +124,7 @@ def main():
             if k > 0:
                 scan = os.path.join(work, "copy.ply")
                 perturb(args.scan, scan, k, args.amplitude)
-            segments, labelled, within, mean = one_copy(args, scan, work)
+            segments, labelled, within, mean = one_copy(args, scan, work, k)
             rows.append((segments, labelled, within, mean))
             print("copy %d%s: %d segments%s, %.1f%% within 0.42 mm, mean %.3f mm" % (
                 k, " (the scan)" if k == 0 else "", segments,
