@@ -2,6 +2,7 @@
 
 #include "common/mesh/count_segments.h"
 #include "common/mesh/face_adjacency.h"
+#include "common/segment/describe_carved_blends.h"
 #include "common/segment/merge_segments.h"
 #include "common/mesh/check_mesh_input.h"
 #include "common/segment/move_faces_to_new_segment.h"
@@ -15,7 +16,6 @@
 #include "meshlab_api/load_segments.h"
 
 #include <QElapsedTimer>
-#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
@@ -283,13 +283,8 @@ Status SegmentFilters::autoSegmentByPrimitives(MeshModel& mm, const Arguments& p
   write_segment_blends(mm.cm, segment_of_face, report.blends);  // Fit All makes them blends of their planes
   run.logf("%s: %d faces split into %d segments (%d grown from primitives), tolerance %.4g (roughness %.4g), in %lld ms.",
       qUtf8Printable(name), mm.cm.fn, k, report.grown_regions, report.tolerance, report.roughness, timer.elapsed());
-  if (!report.blends.empty()) {
-    QStringList carved;
-    for (const SegmentBlendRecord& b : report.blends)
-      carved << QString("%1 between %2 and %3").arg(b.segment).arg(b.plane_a).arg(b.plane_b);
-    run.logf("%s: %d fillets and chamfers carved from the planes they join: segment %s.", qUtf8Printable(name),
-             int(report.blends.size()), qUtf8Printable(carved.join("; segment ")));
-  }
+  if (!report.blends.empty())
+    run.logf("%s: %s.", qUtf8Printable(name), describe_carved_blends(report.blends).c_str());
   return Status::success();
 }
 

@@ -6,15 +6,19 @@
 // the ranges the filters accept (the filters refuse others: check_primitive_growing_params). Entry points:
 // segment_by_primitive_growing (normals, roughness, seed, grow, merge, dissolve, assign, relax, blends) and
 // segment_by_normal_angle. Invariants: dense ids with every live face labelled and deleted ones -1, one
-// primitive per segment, carved blends between two other segments, a finite roughness kept on the mesh, and the
-// same result on a second run with another thread count.
+// primitive per segment, carved blends between two other segments and named in the log's line, a finite roughness
+// kept on the mesh, and the same result on a second run with another thread count.
 #include "common/mesh/surface_roughness_attribute.h"
+#include "common/segment/describe_carved_blends.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
 #include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 
 using namespace primitive_edit;
 using namespace fuzz;
@@ -57,6 +61,11 @@ void run(Decoder& in)
                  b.plane_b < G && b.segment != b.plane_a && b.segment != b.plane_b && b.plane_a != b.plane_b &&
                  report.primitive_of_segment[size_t(b.segment)] &&
                  primitive_is_valid(*report.primitive_of_segment[size_t(b.segment)]));
+    // The log's line names every one of them (describe_carved_blends.h), and is empty without them.
+    const std::string carved = describe_carved_blends(report.blends);
+    FUZZ_CHECK(carved.empty() == report.blends.empty());
+    FUZZ_CHECK(std::count(carved.begin(), carved.end(), ';') + (carved.empty() ? 0 : 1) ==
+               std::ptrdiff_t(report.blends.size()));
     grow.threads = 2;
     FUZZ_CHECK(segment_by_primitive_growing(m, adj, grow, again) == G && again == grown);
     if (grow.roughness <= 0) {

@@ -34,6 +34,7 @@
 #include "common/pipeline/fit_all_segments.h"
 #include "common/pipeline/fit_segment.h"
 #include "common/pipeline/snap_onto_primitive.h"
+#include "common/segment/describe_carved_blends.h"
 #include "common/segment/merge_segments.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
@@ -165,8 +166,10 @@ public:
     const int k = segment_by_primitive_growing(*mesh_, adjacency_, with_roughness, labels, &report, progress);
     char tolerance[64];
     std::snprintf(tolerance, sizeof tolerance, "%.4g (roughness %.4g)", report.tolerance, report.roughness);
+    const std::string carved = describe_carved_blends(report.blends);
     EditOutcome done = replace_segmentation(std::move(labels), std::to_string(k) + " segments by primitive fit, "
-                                                                                   "tolerance " + tolerance);
+                                                                                   "tolerance " + tolerance +
+                                                                   (carved.empty() ? "" : "; " + carved));
     write_segment_blends(*mesh_, labels_, report.blends);
     return done;
   }

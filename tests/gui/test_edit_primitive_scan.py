@@ -8,8 +8,8 @@ tool is started (Ctrl+Shift+P), S segments with the panel's default method ("Pri
 filter at the same defaults), and the mesh is exported with face quality through MeshLab's Export dialog. The
 two id arrays must give the same partition of the faces with the same segment count (identical ids, or at
 least identical up to a relabelling: which one holds is printed), and the tool's log line "Primitive Edit:
-automatic segmentation: N segments" must give the batch's count. Screenshots of every step are kept in the
-work directory.
+automatic segmentation: N segments" must give the batch's count and list the fillets and chamfers carved as the
+batch's log does. Screenshots of every step are kept in the work directory.
 
 Usage: python3 test_edit_primitive_scan.py --meshlab PATH --batch PATH --workdir DIR
 (--batch: meshlabserver or meshlab_runner.) Needs Xvfb, xvfb-run, xdotool and ImageMagick's import.
@@ -55,7 +55,8 @@ def segment_ids(path, label):
 
 
 def run_batch(batch, workdir, scan):
-    """The filter at its defaults in the batch program. Returns (ids, count logged) or (None, None)."""
+    """The filter at its defaults in the batch program. Returns (ids, count logged, what it logged as carved: ""
+    when nothing) or (None, None, None)."""
     script = os.path.join(workdir, "segment_scan.mlx")
     write_mlx(script, [(FILTER, DEFAULTS)])
     out = os.path.join(workdir, "batch.ply")
@@ -66,8 +67,10 @@ def run_batch(batch, workdir, scan):
             print("batch:", line.strip())
     if not check(code == 0 and found, "batch: %s ran (exit %d)" % (FILTER, code)):
         print(console[-3000:])
-        return None, None
-    return segment_ids(out, "batch"), int(found[-1][1])
+        return None, None, None
+    carved = re.findall(re.escape(FILTER) + r": (\d+ fillets? (?:and|or) chamfers? carved .*)\.\s*$", log + console,
+                        re.MULTILINE)
+    return segment_ids(out, "batch"), int(found[-1][1]), carved[-1] if carved else ""
 
 
 def wait_for_log(path, pattern, timeout):
@@ -127,7 +130,7 @@ def main():
     scan = os.path.join(workdir, "bracket_scan.ply")
     shutil.copyfile(SCAN, scan)
 
-    batch_ids, batch_count = run_batch(os.path.abspath(args.batch), workdir, scan)
+    batch_ids, batch_count, batch_carved = run_batch(os.path.abspath(args.batch), workdir, scan)
 
     log_path = os.path.join(workdir, "meshlab.log")
     exported = os.path.join(workdir, "panel.ply")
@@ -169,6 +172,11 @@ def main():
     check(len(logged) == 1 and batch_count is not None and logged[0] == batch_count,
           "log: 'Primitive Edit: automatic segmentation: N segments' with N = the filter's %s (logged %s)"
           % (batch_count, logged))
+    # The fillets and chamfers the segmentation carved: the panel says what the filter says (the bundled scan has
+    # two).
+    check(batch_carved is not None and (batch_carved == "" and not any("carved" in l for l in lines) or
+                                        batch_carved != "" and len(lines) == 1 and "; " + batch_carved in lines[0]),
+          "log: the panel lists the fillets and chamfers carved as the filter does (%r)" % batch_carved)
     gui_ids = segment_ids(exported, "panel")
     if gui_ids is not None and batch_ids is not None:
         compare(gui_ids, batch_ids, batch_count)

@@ -7,7 +7,9 @@
 #include "common/base/constants.h"
 #include "common/mesh/segment_blends_attribute.h"
 #include "common/pipeline/fit_all_segments.h"
+#include "common/pipeline/primitive_edit_session.h"
 #include "common/segment/carve_edge_blends.h"
+#include "common/segment/describe_carved_blends.h"
 #include "common/segment/segment_by_primitive_growing.h"
 
 #include "test_mesh.h"
@@ -16,6 +18,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace {
@@ -196,6 +199,39 @@ TEST(SegmentBlendsAttribute, ReadBackOnlyForTheSameVerticesAndSegments)
   EXPECT_TRUE(read_segment_blends(m, merged).empty());
   m.vert[0].P()[0] += 0.001f; // vertices moved (a snap)
   EXPECT_TRUE(read_segment_blends(m, seg).empty());
+}
+
+TEST(DescribeCarvedBlends, OneLineForTheLog)
+{
+  EXPECT_EQ(describe_carved_blends({}), "");
+  EXPECT_EQ(describe_carved_blends({{15, 1, 13}}), "1 fillet or chamfer carved from the planes it joins: segment 15 "
+                                                   "between 1 and 13");
+  EXPECT_EQ(describe_carved_blends({{15, 1, 13}, {16, 1, 12}}),
+            "2 fillets and chamfers carved from the planes they join: segment 15 between 1 and 13; segment 16 "
+            "between 1 and 12");
+}
+
+// The edit tool segments as the filter does and says what it carved, as the filter's log does; the blend is kept
+// on the mesh for Fit All.
+TEST(CarveEdgeBlends, EditToolSaysWhatItCarved)
+{
+  TMesh m;
+  std::vector<int> truth, seg;
+  SegmentByPrimitiveGrowingReport report;
+  segment_rough_plate_edge(m, 1.5, truth, seg, report);
+  ASSERT_EQ(report.blends.size(), 1u);
+  PrimitiveEditSession<TMesh> session;
+  ASSERT_TRUE(session.attach(m).status.ok());
+  const EditOutcome outcome = session.auto_segment(SegmentByPrimitiveGrowingParams());
+  ASSERT_TRUE(outcome.status.ok()) << outcome.status.error;
+  EXPECT_EQ(session.segment_of_face(), seg);
+  const std::string carved = describe_carved_blends(report.blends);
+  EXPECT_NE(outcome.summary.find("; " + carved), std::string::npos) << outcome.summary;
+  const std::vector<SegmentBlendRecord> kept = read_segment_blends(m, session.segment_of_face());
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].segment, report.blends[0].segment);
+  session.detach();
+  m.ClearAttributes(); // vcg's ~TriMesh leaves per-mesh attributes allocated
 }
 
 } // namespace
