@@ -17,12 +17,11 @@ namespace {
 
 using namespace primitive_edit;
 
-
 EdgeSection plate_edge()
 {
   const std::optional<EdgeSection> e = edge_section(test_fit::make_plane({0, 0, 5}, {0, 0, 1}),
-                                                    test_fit::make_plane({0, 0, 0}, {0, -1, 0}), {20, 10, 5}, {20, 0, 2},
-                                                    {20, 0, 5});
+                                                    test_fit::make_plane({0, 0, 0}, {0, -1, 0}), {20, 10, 5},
+                                                    {20, 0, 2}, {20, 0, 5});
   EXPECT_TRUE(e.has_value());
   return *e;
 }

@@ -72,7 +72,6 @@ SegmentSamples quarter_circle(double z0, double r, int n, double sigma, unsigned
       r * kPi / 2, n, sigma, seed);
 }
 
-
 SegmentContact contact(int a, int b, double y, double z)
 {
   SegmentContact c;
@@ -116,7 +115,8 @@ TopEdge top_edge(BlendForm form, double s, double sigma)
   e.samples.push_back(strip({0, 0}, {0, 5 - s}, {-1, 0}, 1500, sigma, 2));
   e.samples.push_back(form == BlendForm::Fillet ? quarter_circle(5, s, 2000, sigma, 3)
                                                 : strip({s, 5}, {0, 5 - s}, {-1, 1}, 2000, sigma, 3));
-  e.primitives = {test_fit::make_plane({0, 0, 5}, {0, 0, 1}), test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(e.samples[2], sigma)};
+  e.primitives = {test_fit::make_plane({0, 0, 5}, {0, 0, 1}), test_fit::make_plane({0, 0, 0}, {0, -1, 0}),
+                  own_fit(e.samples[2], sigma)};
   e.contacts = {contact(TopEdge::Top, TopEdge::Blend, s, 5), contact(TopEdge::Side, TopEdge::Blend, 0, 5 - s)};
   return e;
 }
@@ -233,9 +233,11 @@ TEST(EdgeBlends, AWallBetweenTwoBlendsStaysAPlane)
       strip({0, 0.8}, {0, 3.5}, {-1, 0}, 1500, sigma, 3),  strip({0, 0.8}, {0.8, 0}, {-1, -1}, 800, sigma, 4),
       strip({0.8, 0}, {20.8, 0}, {0, -1}, 3000, sigma, 5)};
   std::vector<std::optional<Primitive>> primitives = {
-      test_fit::make_plane({0, 0, 5}, {0, 0, 1}), fit_primitive(PrimitiveType::Plane, samples[Fillet].points, samples[Fillet].normals,
-                                                 samples[Fillet].weights).primitive,
-      test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(samples[Chamfer], sigma), test_fit::make_plane({0, 0, 0}, {0, 0, -1})};
+      test_fit::make_plane({0, 0, 5}, {0, 0, 1}),
+      fit_primitive(PrimitiveType::Plane, samples[Fillet].points, samples[Fillet].normals, samples[Fillet].weights)
+          .primitive,
+      test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(samples[Chamfer], sigma),
+      test_fit::make_plane({0, 0, 0}, {0, 0, -1})};
   const std::vector<SegmentContact> contacts = {contact(Top, Fillet, 1.5, 5), contact(Fillet, Wall, 0, 3.5),
                                                 contact(Wall, Chamfer, 0, 0.8), contact(Chamfer, Bottom, 0.8, 0)};
   const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(primitives, samples, contacts, sigma, 0.0);
