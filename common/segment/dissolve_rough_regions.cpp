@@ -12,35 +12,31 @@ double share_near_neighbours(const GrowingFaces& g, const GrowingRegions& region
   });
 }
 
-int dissolve_rough_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
+int dissolve_rough_regions(const GrowingFaces& g, const RegionPairs& adjacent, const GrowingScale& scale,
                            GrowingRegions& regions)
 {
-  std::vector<int>& label = regions.label;
   const int count = int(regions.primitive.size());
+  auto size = [&](int r) { return regions.faces[std::size_t(r)].size(); };
+  std::vector<std::vector<int>> larger_neighbours(static_cast<std::size_t>(count));
+  for (const auto& [a, b] : adjacent) {
+    if (size(b) > size(a))
+      larger_neighbours[std::size_t(a)].push_back(b);
+    else if (size(a) > size(b))
+      larger_neighbours[std::size_t(b)].push_back(a);
+  }
   std::vector<int> by_size;
   for (int r = 0; r < count; ++r)
-    if (!regions.faces[std::size_t(r)].empty())
+    if (size(r) > 0)
       by_size.push_back(r);
-  std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
-    return regions.faces[std::size_t(a)].size() < regions.faces[std::size_t(b)].size();
-  });
-  std::vector<int> neighbours;
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) { return size(a) < size(b); });
   int dissolved = 0;
   for (int r : by_size) {
     std::vector<int>& faces = regions.faces[std::size_t(r)];
-    neighbours.clear();
-    for (int f : faces)
-      for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
-        const int q = label[std::size_t(adj.neighbour[std::size_t(k)])];
-        if (q >= 0 && q != r && regions.faces[std::size_t(q)].size() > faces.size())
-          neighbours.push_back(q);
-      }
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    const std::vector<int>& neighbours = larger_neighbours[std::size_t(r)];
     if (!neighbours.empty() && share_near_neighbours(g, regions, faces, neighbours, 2.0 * scale.tolerance,
                                                      scale.angle) >= kMergeShare) {
       for (int f : faces)
-        label[std::size_t(f)] = -1;
+        regions.label[std::size_t(f)] = -1;
       std::vector<int>().swap(faces);
       ++dissolved;
     }

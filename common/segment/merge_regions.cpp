@@ -71,8 +71,8 @@ std::vector<std::tuple<int, int, int>> region_borders(const FaceAdjacency& adj, 
 
 } // namespace merge_detail
 
-int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                  GrowingRegions& regions, int threads)
+RegionPairs merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
+                          GrowingRegions& regions, int threads)
 {
   using namespace merge_detail;
   const int count = int(regions.primitive.size());
@@ -101,7 +101,7 @@ int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const Growing
   std::vector<std::pair<int, int>> pair_of(window_size);
   std::vector<std::optional<Primitive>> joint(window_size);
   std::vector<int> changed_in_window(static_cast<std::size_t>(count), -1);
-  int total = 0, windows = 0;
+  int windows = 0;
   for (int round = 1, merges = 1; merges > 0; ++round) {
     merges = 0;
     for (std::size_t next = 0; next < borders.size();) {
@@ -146,12 +146,17 @@ int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const Growing
         ++merges;
       }
     }
-    total += merges;
   }
   for (int& l : regions.label)
     if (l >= 0)
       l = find_root(parent, l);
-  return total;
+  RegionPairs adjacent;
+  for (std::size_t border = 0; border < borders.size(); ++border)
+    if (const auto [a, b] = roots(border); a != b)
+      adjacent.emplace_back(std::min(a, b), std::max(a, b));
+  std::sort(adjacent.begin(), adjacent.end());
+  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
+  return adjacent;
 }
 
 } // namespace primitive_edit

@@ -4,7 +4,8 @@
 // Input:  GrowingFaces, the FaceAdjacency, the GrowingRegions of grow_regions.h, its GrowingScale and the threads
 //         (parallel_for.h; <= 0: all).
 // Output: the regions merged in place: a merged region keeps the smaller id and the union's primitive, the
-//         other keeps no faces; label follows. Returns the number of merges.
+//         other keeps no faces; label follows. Returns the pairs of merged regions that share an edge (the grown
+//         regions' borders mapped to the regions they went into), for the phases after.
 // Method: pairs of adjacent regions, longest shared border first, in rounds until nothing merges (after the
 //         first round, only pairs with a region that merged in the round before). A pair merges when one
 //         primitive agrees with each region over at least kMergeShare of its area (merged_primitive): the
@@ -53,8 +54,11 @@ std::vector<std::tuple<int, int, int>> region_borders(const FaceAdjacency& adj, 
 
 } // namespace merge_detail
 
-int merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
-                  GrowingRegions& regions, int threads = 0);
+// Pairs (a, b), a < b, of regions that share an edge, sorted.
+using RegionPairs = std::vector<std::pair<int, int>>;
+
+RegionPairs merge_regions(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
+                          GrowingRegions& regions, int threads = 0);
 
 } // namespace primitive_edit
 

@@ -212,9 +212,9 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("grow");
 
   report_progress(progress, 70, "Merging regions");
-  merge_regions(g, adj, scale, regions, params.threads);
+  const RegionPairs adjacent = merge_regions(g, adj, scale, regions, params.threads);
   clock.lap("merge");
-  dissolve_rough_regions(g, adj, scale, regions);
+  dissolve_rough_regions(g, adjacent, scale, regions);
   clock.lap("dissolve");
 
   report_progress(progress, 80, "Assigning the faces between regions");

@@ -623,6 +623,11 @@ TEST(DissolveRoughRegions, StripExplainedByItsNeighboursFaceByFaceDissolves)
     const FaceAdjacency adj = build_face_adjacency(m);
     const GrowingFaces g = growing_faces(m, adj, 0);
     GrowingRegions regions = corner_regions(g, c);
+    RegionPairs adjacent;
+    for (const auto& [length, a, b] : merge_detail::region_borders(adj, regions.label))
+      adjacent.emplace_back(a, b);
+    std::sort(adjacent.begin(), adjacent.end());
+    EXPECT_EQ(adjacent, (RegionPairs{{0, 2}, {1, 2}}));
     const std::vector<int> strip = regions.faces[2];
     ASSERT_LT(strip.size(), regions.faces[0].size());
     for (int q : {0, 1})
@@ -632,16 +637,47 @@ TEST(DissolveRoughRegions, StripExplainedByItsNeighboursFaceByFaceDissolves)
     const double both = share_near_neighbours(g, regions, strip, {0, 1}, 2.0 * scale.tolerance, scale.angle);
     if (c < 1.0) {
       EXPECT_GT(both, 0.8);
-      EXPECT_EQ(dissolve_rough_regions(g, adj, scale, regions), 1);
+      EXPECT_EQ(dissolve_rough_regions(g, adjacent, scale, regions), 1);
       EXPECT_TRUE(regions.faces[2].empty());
       for (int f : strip)
         EXPECT_EQ(regions.label[std::size_t(f)], -1);
     } else {
       EXPECT_LT(both, 0.2);
-      EXPECT_EQ(dissolve_rough_regions(g, adj, scale, regions), 0);
+      EXPECT_EQ(dissolve_rough_regions(g, adjacent, scale, regions), 0);
       EXPECT_EQ(regions.faces[2], strip);
     }
   }
+}
+
+
+// The floor cut in two at y = 2 (regions 0 and 3, the same plane) merges into region 0; the pairs returned are the
+// borders of the merged labels, as a pass over the faces finds them.
+TEST(MergeRegions, ReturnsTheBordersOfTheMergedRegions)
+{
+  GrowingScale scale;
+  scale.tolerance = 0.1;
+  scale.angle = radians_from_degrees(30.0);
+  test_mesh::TMesh m;
+  make_chamfered_corner(m, 2.0, 0.1);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  const GrowingFaces g = growing_faces(m, adj, 0);
+  GrowingRegions regions = corner_regions(g, 2.0);
+  regions.primitive.push_back(regions.primitive[0]);
+  regions.faces.assign(4, {});
+  for (std::size_t f = 0; f < g.centroid.size(); ++f) {
+    int& label = regions.label[f];
+    if (label == 0 && g.centroid[f].y() > 2.0)
+      label = 3;
+    regions.faces[std::size_t(label)].push_back(int(f));
+  }
+  const RegionPairs adjacent = merge_regions(g, adj, scale, regions, 1);
+  EXPECT_TRUE(regions.faces[3].empty());
+  RegionPairs scanned;
+  for (const auto& [length, a, b] : merge_detail::region_borders(adj, regions.label))
+    scanned.emplace_back(a, b);
+  std::sort(scanned.begin(), scanned.end());
+  EXPECT_EQ(adjacent, scanned);
+  EXPECT_EQ(adjacent, (RegionPairs{{0, 2}, {1, 2}}));
 }
 
 } // namespace
