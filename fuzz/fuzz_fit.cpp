@@ -4,13 +4,15 @@
 // The bytes are decoded (fuzz_input.h) into up to 100 points of a patch of a plane, sphere, cylinder, cone or
 // torus (or raw coordinates) with noise and special values, optional normals and weights, fit options and a
 // start primitive. Entry points: fit_primitive of a decoded type with each method, fit_quadric_direct,
-// fit_primitive_auto, refine_primitive from the decoded start, fit_segment, and describe_primitive of the start.
+// fit_primitive_auto, refine_primitive from the decoded start, fit_segment, describe_primitive of the start, and
+// reduce_degenerate_cone of the refined start.
 // Invariants: a fit that reports success gives a valid primitive of the type asked with finite residuals, the
 // same input gives the same result again (no state between calls), and what is shown of a value is itself or 0.
 #include "common/base/describe_primitive.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/fit_quadric_direct.h"
+#include "common/fit/reduce_degenerate_cone.h"
 #include "common/fit/refine_primitive.h"
 #include "common/pipeline/fit_segment.h"
 #include "fuzz/fuzz_input.h"
@@ -114,5 +116,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const FitResult segment = fit_segment(samples, type, automatic);
   check_fit(segment);
   FUZZ_CHECK(!segment.status.ok() || (segment.primitive.type == type && primitive_is_valid(segment.primitive)));
+
+  // A refined cone that no longer tapers within a tolerance becomes its cylinder (the segmentation's refits); any
+  // other fit stays as it is.
+  const FitResult reduced = reduce_degenerate_cone(refined, points, weights, in.special(0.1), options);
+  check_fit(reduced);
+  const bool to_cylinder = refined.status.ok() && refined.primitive.type == PrimitiveType::Cone &&
+                           reduced.primitive.type == PrimitiveType::Cylinder;
+  FUZZ_CHECK(to_cylinder ? reduced.status.ok() && primitive_is_valid(reduced.primitive)
+                         : reduced.primitive.type == refined.primitive.type);
   return 0;
 }

@@ -8,18 +8,6 @@ namespace primitive_edit {
 
 namespace fit_auto_detail {
 
-double axial_extent(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const Eigen::Vector3d& axis)
-{
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    if (!weights.size() || weights[i] > 0) {
-      const double h = points.row(i).dot(axis);
-      lo = std::min(lo, h);
-      hi = std::max(hi, h);
-    }
-  return hi > lo ? hi - lo : 0.0;
-}
-
 std::vector<FitResult> screen_candidates(const FitSample& s, const FitOptions& options, int threads)
 {
   std::vector<FitResult> candidates(kPrimitiveTypeCount);
@@ -82,8 +70,7 @@ AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Eigen::Ma
       eligible = eligible && p.radius - std::sqrt(std::max(0.0, p.radius * p.radius - 0.25 * diagonal * diagonal)) >
                                  tolerance;
     if (type == PrimitiveType::Cone)
-      eligible = eligible && fit_auto_detail::axial_extent(s.points, s.weights, p.axis) * std::tan(p.half_angle) >
-                                 tolerance;
+      eligible = eligible && !cone_is_cylinder_within(p, s.points, s.weights, tolerance);
     if (type == PrimitiveType::Torus)
       eligible = eligible && p.radius < 100 * diagonal;
     if (eligible && score < chosen_score) {

@@ -15,9 +15,9 @@
 //         scan's true segments, 0.1 per parameter chose the right type for 71% of the area, 0.5 for
 //         78% (bench_segment_scan --labels). The floor makes exact data choose the simplest exact
 //         type. Degenerate fits are not eligible: a sphere or cylinder that sags less than the
-//         tolerance over the data (a plane), a cone whose radius
-//         changes by less than the tolerance along the data (a cylinder), a torus whose major radius
-//         exceeds 100 diagonals (a cylinder). Candidates must have rms <= tolerance.
+//         tolerance over the data (a plane), a cone whose radius changes by less than the tolerance
+//         along the data (a cylinder, reduce_degenerate_cone.h), a torus whose major radius exceeds 100
+//         diagonals (a cylinder). Candidates must have rms <= tolerance.
 // Speed:  with more than kAutoFitScreenPoints (300) points the candidates are fitted on an evenly
 //         strided subsample of that size, with at most 20 iterations per round (their rms /
 //         max_residual / point_count refer to it): enough to rank the types, and 5-10 times cheaper
@@ -33,6 +33,7 @@
 #include "common/base/known_scale.h"
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_subsample.h"
+#include "common/fit/reduce_degenerate_cone.h"
 #include "common/fit/refine_primitive.h"
 
 #include <algorithm>
@@ -77,9 +78,6 @@ inline double automatic_fit_tolerance(double diagonal, double roughness)
 constexpr Eigen::Index kAutoFitScreenPoints = 300;
 
 namespace fit_auto_detail {
-
-// Extent of the points (w > 0) along the axis: the length over which a cone's taper is seen.
-double axial_extent(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const Eigen::Vector3d& axis);
 
 // Every type's fit of the screening sample, in PrimitiveType order, on up to `threads` threads.
 std::vector<FitResult> screen_candidates(const FitSample& s, const FitOptions& options, int threads);

@@ -18,7 +18,8 @@ std::optional<Primitive> fit_region_primitive(const GrowingFaces& g, const std::
   if (start) {
     FitOptions fast;
     fast.max_iterations = 10;
-    const FitResult r = refine_primitive(*start, points, weights, fast);
+    const FitResult r =
+        reduce_degenerate_cone(refine_primitive(*start, points, weights, fast), points, weights, tol, fast);
     if (accept(r))
       return r.primitive;
     return std::nullopt;

@@ -5,7 +5,8 @@
 //         threads for fit_primitive_auto's candidate types (the result does not depend on them).
 // Output: the primitive, or std::nullopt when none is accepted.
 // Method: on at most kFitSampleCount evenly strided faces (centroid, smoothed normal, area): with a start,
-//         the start refined (refine_primitive, 10 iterations); without, a plane first, then
+//         the start refined (refine_primitive, 10 iterations), a cone that no longer tapers by the tolerance
+//         over the faces as its cylinder (reduce_degenerate_cone.h); without, a plane first, then
 //         fit_primitive_auto at half the tolerance. The faces' agreeing share decides.
 // Cost:   O(kFitSampleCount) per iteration of the fits, plus O(faces) for the share.
 #ifndef PRIMITIVE_EDIT_FIT_REGION_PRIMITIVE_H
@@ -13,6 +14,7 @@
 
 #include "common/fit/fit_plane.h"
 #include "common/fit/fit_primitive_auto.h"
+#include "common/fit/reduce_degenerate_cone.h"
 #include "common/fit/refine_primitive.h"
 #include "common/segment/growing_faces.h"
 

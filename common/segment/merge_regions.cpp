@@ -15,7 +15,10 @@ std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vect
   std::optional<Primitive> best;
   double best_share = kMergeShare;
   const double diagonal = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+  FitOptions fast;
+  fast.max_iterations = 10;
   auto consider = [&](FitResult r) {
+    r = reduce_degenerate_cone(r, points, weights, tol, fast);
     // Refined on a wavy union, a sphere or cylinder may flatten out to a huge radius: within the tolerance
     // it is a plane, and is reported as one (as fit_primitive_auto would choose).
     const bool curved = r.primitive.type == PrimitiveType::Sphere || r.primitive.type == PrimitiveType::Cylinder;
@@ -32,8 +35,6 @@ std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vect
       best_share = share;
     }
   };
-  FitOptions fast;
-  fast.max_iterations = 10;
   if (pa.type != PrimitiveType::Torus || pb.type == PrimitiveType::Torus)
     consider(refine_primitive(pa, points, weights, fast));
   if (pb.type != pa.type && pb.type != PrimitiveType::Torus)

@@ -14,7 +14,9 @@
 //         of a surface meeting it at an edge almost all miss. Candidates are each region's primitive refined
 //         on the union, so the types may differ (a piece of a wavy plane that growth fitted with a torus
 //         joins the plane), except that a torus is tried only for two tori: it has the freedom to also fit a
-//         fillet with the faces it joins. The candidate whose worse region agrees most wins.
+//         fillet with the faces it joins. A candidate is taken in its simplest form within the tolerance: a cone
+//         that no longer tapers as its cylinder (reduce_degenerate_cone.h), a sphere or cylinder that no longer
+//         sags as a plane. The candidate whose worse region agrees most wins.
 //         The pairs are tested kMergeWindowPerThread per thread at once (the tests only read the regions), then
 //         merged in border order; a pair whose region a merge of its window changed is tested again, so the
 //         merges are those of testing one pair after the other on any thread count.

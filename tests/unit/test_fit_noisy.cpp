@@ -196,3 +196,46 @@ TEST(FitNoisy, LargeInputIsScreenedOnASubsampleAndRefinedOnAllPoints)
 }
 
 } // namespace
+
+// A cone refined on a noisy cylinder runs towards it (half angle to 0, apex far away) without reaching it; within
+// the tolerance it is the cylinder, refined on the same points. A cone that tapers, or a tolerance finer than the
+// taper, keeps the cone.
+TEST(ReduceDegenerateCone, ConeThatDoesNotTaperIsItsCylinder)
+{
+  const Primitive truth = make_cylinder({1, 2, 0}, {0.2, 0.1, 1}, 4);
+  Patch patch;
+  patch.extent = 6;
+  patch.sweep = kPi;
+  Sample s = sample_primitive(truth, patch, 600, 11);
+  add_noise(&s, 0.02, 2, 12);
+  const Eigen::VectorXd weights;
+  const double angle = 2e-3, apex_distance = 4 / std::tan(angle);
+  FitResult near_cylinder;
+  near_cylinder.primitive = make_cone(truth.origin - apex_distance * truth.axis, truth.axis, angle);
+  const FitResult cone = refine_primitive(near_cylinder.primitive, s.points, weights);
+  ASSERT_TRUE(cone.status.ok());
+  ASSERT_EQ(cone.primitive.type, PrimitiveType::Cone);
+  const double taper = axial_extent(s.points, weights, cone.primitive.axis) * std::tan(cone.primitive.half_angle);
+  EXPECT_LT(taper, 0.05);
+
+  FitOptions options;
+  const FitResult reduced = reduce_degenerate_cone(cone, s.points, weights, 0.05, options);
+  ASSERT_TRUE(reduced.status.ok());
+  ASSERT_EQ(reduced.primitive.type, PrimitiveType::Cylinder);
+  EXPECT_NEAR(reduced.primitive.radius, 4, 0.02);
+  EXPECT_GT(std::abs(reduced.primitive.axis.dot(truth.axis)), std::cos(radians_from_degrees(0.5)));
+  EXPECT_LT(distance_to_line(reduced.primitive.origin, truth.origin, truth.axis), 0.02);
+  EXPECT_LE(reduced.rms, cone.rms * 1.01);
+
+  const FitResult finer = reduce_degenerate_cone(cone, s.points, weights, 0.5 * taper, options);
+  EXPECT_EQ(finer.primitive.type, PrimitiveType::Cone);
+
+  Patch frustum;
+  frustum.near = 2;
+  frustum.far = 4;
+  const Primitive tapering = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(20));
+  const Sample t = sample_primitive(tapering, frustum, 600, 13);
+  FitResult cone_fit;
+  cone_fit.primitive = tapering;
+  EXPECT_EQ(reduce_degenerate_cone(cone_fit, t.points, weights, 0.05, options).primitive.type, PrimitiveType::Cone);
+}

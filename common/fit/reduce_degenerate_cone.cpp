@@ -1,0 +1,60 @@
+#include "common/fit/reduce_degenerate_cone.h"
+
+#include "common/fit/refine_primitive.h"
+
+#include <cmath>
+#include <limits>
+
+namespace primitive_edit {
+
+double axial_extent(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const Eigen::Vector3d& axis)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (!weights.size() || weights[i] > 0) {
+      const double h = points.row(i).dot(axis);
+      lo = std::min(lo, h);
+      hi = std::max(hi, h);
+    }
+  return hi > lo ? hi - lo : 0.0;
+}
+
+bool cone_is_cylinder_within(const Primitive& cone, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
+                             double tolerance)
+{
+  // Not "<=": a taper that is not a number is no cone either.
+  return cone.type == PrimitiveType::Cone &&
+         !(axial_extent(points, weights, cone.axis) * std::tan(cone.half_angle) > tolerance);
+}
+
+FitResult reduce_degenerate_cone(const FitResult& fit, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
+                                 double tolerance, const FitOptions& options)
+{
+  if (!fit.status.ok() || !cone_is_cylinder_within(fit.primitive, points, weights, tolerance))
+    return fit;
+  const Primitive& cone = fit.primitive;
+  double height = 0, distance = 0, total = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double w = weights.size() ? weights[i] : 1.0;
+    if (!(w > 0))
+      continue;
+    const Eigen::Vector3d v = points.row(i).transpose() - cone.origin;
+    const double h = v.dot(cone.axis);
+    height += w * h;
+    distance += w * (v - h * cone.axis).norm();
+    total += w;
+  }
+  if (!(total > 0))
+    return fit;
+  Primitive cylinder;
+  cylinder.type = PrimitiveType::Cylinder;
+  cylinder.axis = cone.axis;
+  cylinder.origin = cone.origin + height / total * cone.axis;
+  cylinder.radius = distance / total;
+  if (!primitive_is_valid(cylinder))
+    return fit;
+  FitResult refined = refine_primitive(cylinder, points, weights, options);
+  return refined.status.ok() ? refined : fit;
+}
+
+} // namespace primitive_edit
