@@ -2,6 +2,7 @@
 
 #include "common/fit/refine_primitive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
