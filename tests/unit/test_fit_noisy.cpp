@@ -2,6 +2,7 @@
 // within 1%, the right type from fit_primitive_auto; 10% far outliers: radius within 1% when robust.
 #include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
+#include "common/fit/reduce_degenerate_cone.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>
@@ -195,8 +196,6 @@ TEST(FitNoisy, LargeInputIsScreenedOnASubsampleAndRefinedOnAllPoints)
   EXPECT_LT(std::abs(a.best.primitive.radius - 2), 0.002 * 2);
 }
 
-} // namespace
-
 // A cone refined on a noisy cylinder runs towards it (half angle to 0, apex far away) without reaching it; within
 // the tolerance it is the cylinder, refined on the same points. A cone that tapers, or a tolerance finer than the
 // taper, keeps the cone.
@@ -239,3 +238,5 @@ TEST(ReduceDegenerateCone, ConeThatDoesNotTaperIsItsCylinder)
   cone_fit.primitive = tapering;
   EXPECT_EQ(reduce_degenerate_cone(cone_fit, t.points, weights, 0.05, options).primitive.type, PrimitiveType::Cone);
 }
+
+} // namespace
