@@ -1,6 +1,7 @@
 #include "common/fit/fit_primitive_auto.h"
 
 #include "common/base/parallel_for.h"
+#include "common/geometry/sagitta.h"
 
 #include <atomic>
 
@@ -67,8 +68,7 @@ AutoFitResult fit_primitive_auto(const Eigen::MatrixX3d& points, const Eigen::Ma
     const Primitive& p = c.primitive;
     bool eligible = c.rms <= tolerance;
     if (type == PrimitiveType::Sphere || type == PrimitiveType::Cylinder)
-      eligible = eligible && p.radius - std::sqrt(std::max(0.0, p.radius * p.radius - 0.25 * diagonal * diagonal)) >
-                                 tolerance;
+      eligible = eligible && sagitta(p.radius, diagonal) > tolerance;
     if (type == PrimitiveType::Cone)
       eligible = eligible && !cone_is_cylinder_within(p, s.points, s.weights, tolerance);
     if (type == PrimitiveType::Torus)

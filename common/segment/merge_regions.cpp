@@ -1,5 +1,7 @@
 #include "common/segment/merge_regions.h"
 
+#include "common/geometry/sagitta.h"
+
 namespace primitive_edit {
 
 std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vector<int>& fa, const Primitive& pa,
@@ -22,9 +24,7 @@ std::optional<Primitive> merged_primitive(const GrowingFaces& g, const std::vect
     // Refined on a wavy union, a sphere or cylinder may flatten out to a huge radius: within the tolerance
     // it is a plane, and is reported as one (as fit_primitive_auto would choose).
     const bool curved = r.primitive.type == PrimitiveType::Sphere || r.primitive.type == PrimitiveType::Cylinder;
-    if (r.status.ok() && curved &&
-        r.primitive.radius - std::sqrt(std::max(0.0, r.primitive.radius * r.primitive.radius - 0.25 * diagonal * diagonal)) <=
-            tol)
+    if (r.status.ok() && curved && sagitta(r.primitive.radius, diagonal) <= tol)
       r = fit_plane(points, normals, weights);
     if (!r.status.ok() || !primitive_is_valid(r.primitive) || curvature_radius(r.primitive) < scale.min_curvature_radius)
       return;

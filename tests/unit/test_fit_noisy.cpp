@@ -3,6 +3,7 @@
 #include "common/base/constants.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/reduce_degenerate_cone.h"
+#include "common/geometry/sagitta.h"
 #include "test_fit_data.h"
 
 #include <gtest/gtest.h>
@@ -237,6 +238,17 @@ TEST(ReduceDegenerateCone, ConeThatDoesNotTaperIsItsCylinder)
   FitResult cone_fit;
   cone_fit.primitive = tapering;
   EXPECT_EQ(reduce_degenerate_cone(cone_fit, t.points, weights, 0.05, options).primitive.type, PrimitiveType::Cone);
+}
+
+// The depth of an arc over its chord, by which the type choice and the merge call a sphere or cylinder flat: the
+// 3-4-5 triangle's, none over no chord, and the radius itself once the chord spans the diameter or more.
+TEST(Sagitta, ArcOverItsChord)
+{
+  EXPECT_DOUBLE_EQ(sagitta(5, 8), 2);
+  EXPECT_DOUBLE_EQ(sagitta(5, 0), 0);
+  EXPECT_DOUBLE_EQ(sagitta(5, 10), 5);
+  EXPECT_DOUBLE_EQ(sagitta(5, 30), 5);
+  EXPECT_NEAR(sagitta(1000, 10), 100.0 / 8000, 1e-6);  // about c^2 / 8r for a flat arc
 }
 
 } // namespace
