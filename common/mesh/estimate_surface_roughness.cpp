@@ -1,5 +1,8 @@
 #include "common/mesh/estimate_surface_roughness.h"
 
+#include "common/base/prefetch.h"
+#include "common/mesh/prefetch_walk_ahead.h"
+
 namespace primitive_edit {
 
 double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights, const WeightedPca& pca)
@@ -38,6 +41,10 @@ void grow_patch(const FaceAdjacency& adj, const std::vector<double>& area, int s
   patch.assign(1, seed);
   stamp[std::size_t(seed)] = mark;
   for (std::size_t head = 0; head < patch.size() && int(patch.size()) < patch_faces; ++head) {
+    prefetch_walk_ahead(adj, patch, head, 8, [&](std::size_t h) {
+      prefetch(stamp.data() + h);
+      prefetch(area.data() + h);
+    });
     const int f = patch[head];
     for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1] && int(patch.size()) < patch_faces;
          ++k) {
@@ -57,6 +64,10 @@ std::pair<double, double> patch_rms(const std::vector<Eigen::Vector3d>& centroid
   Eigen::MatrixX3d points(Eigen::Index(patch.size()), 3);
   Eigen::VectorXd weights(Eigen::Index(patch.size()));
   for (std::size_t j = 0; j < patch.size(); ++j) {
+    if (j + 8 < patch.size()) {
+      prefetch(centroid.data() + patch[j + 8]);
+      prefetch(area.data() + patch[j + 8]);
+    }
     points.row(Eigen::Index(j)) = centroid[std::size_t(patch[j])].transpose();
     weights[Eigen::Index(j)] = area[std::size_t(patch[j])];
   }

@@ -1,5 +1,7 @@
 #include "common/segment/grow_regions.h"
 
+#include "common/mesh/prefetch_walk_ahead.h"
+
 namespace primitive_edit {
 
 namespace grow_detail {
@@ -18,6 +20,13 @@ void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const 
     open_faces.clear();
     std::size_t head = 0;
     while (head < queue.size()) {
+      prefetch_walk_ahead(adj, queue, head, 16, [&](std::size_t h) {
+        prefetch(g.valid.data() + h);
+        prefetch(label.data() + h);
+        prefetch(stamps.stamp.data() + h);
+        prefetch(g.centroid.data() + h);
+        prefetch(g.normal.data() + h);
+      });
       const int f = queue[head++];
       bool open = false;
       for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k) {
