@@ -5,6 +5,8 @@
 // Output: centroid[f] and area[f] for f = vcg::tri::Index(m, face). A face that is deleted, lacks a vertex,
 //         or whose centroid or area is not finite gets centroid (0, 0, 0) and area 0; a degenerate face gets
 //         its centroid and area 0. So area[f] > 0 marks exactly the faces with a usable centroid and plane.
+//         deleted[f] is 1 for a deleted face: read in the same pass, as a caller that must tell deleted faces
+//         from unusable ones would otherwise read every face again (a 4M-face mesh's faces are 0.4 GB).
 //         The normals, when asked for: the unit normal of each face with area > 0 (the same cross product as
 //         the area), the zero vector for the others. A caller that needs both (the segmentations) reads the
 //         vertices once.
@@ -29,6 +31,7 @@ struct FaceCentroidsAndAreas
 {
   std::vector<Eigen::Vector3d> centroid;
   std::vector<double> area;
+  std::vector<char> deleted;
 };
 
 // The centroid, area and (when asked for) unit normal of one face, as face_centroids_and_areas gives them; false
@@ -63,11 +66,14 @@ FaceCentroidsAndAreas face_centroids_and_areas(const MeshType& m, int threads = 
   FaceCentroidsAndAreas out;
   assign_on_huge_pages(out.centroid, n, Eigen::Vector3d(Eigen::Vector3d::Zero()));
   assign_on_huge_pages(out.area, n, 0.0);
+  assign_on_huge_pages(out.deleted, n, char(0));
   if (unit_normals)
     assign_on_huge_pages(*unit_normals, n, Eigen::Vector3d(Eigen::Vector3d::Zero()));
   parallel_for(n, threads, kFacesPerThread, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t f = begin; f < end; ++f)
+    for (std::size_t f = begin; f < end; ++f) {
+      out.deleted[f] = m.face[f].IsD() ? 1 : 0;
       face_centroid_and_area(m.face[f], out.centroid[f], out.area[f], unit_normals ? &(*unit_normals)[f] : nullptr);
+    }
   });
   return out;
 }

@@ -3,9 +3,9 @@
 namespace primitive_edit {
 
 int assign_leftover_faces(const GrowingFaces& g, const FaceAdjacency& adj,
-                          const std::vector<Primitive>& primitive_of_region, double tol,
-                          const std::vector<char>& deleted, std::vector<int>& label)
+                          const std::vector<Primitive>& primitive_of_region, double tol, std::vector<int>& label)
 {
+  const std::vector<char>& deleted = g.deleted;
   const int face_count = int(label.size());
   using Item = std::pair<double, std::pair<int, int>>; // (cost, (face, region))
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;

@@ -1,8 +1,8 @@
 // assign_leftover_faces.h: the fourth phase of segment_by_primitive_growing: every face no region holds
 // goes to a region.
 //
-// Input:  GrowingFaces, the FaceAdjacency, the regions' labels and primitives (after dissolve_rough_regions.h),
-//         the tolerance, and `deleted` (faces that stay -1).
+// Input:  GrowingFaces (its deleted faces stay -1), the FaceAdjacency, the regions' labels and primitives (after
+//         dissolve_rough_regions.h), the tolerance.
 // Output: label completed: the faces left over (blurred edges, fillets smaller than a seed patch, failed
 //         seeds, dissolved regions) reached from a region get one; those of a component no region reaches
 //         become one new label per component, numbered from the region count. Returns the label count.
@@ -23,8 +23,7 @@
 namespace primitive_edit {
 
 int assign_leftover_faces(const GrowingFaces& g, const FaceAdjacency& adj,
-                          const std::vector<Primitive>& primitive_of_region, double tol,
-                          const std::vector<char>& deleted, std::vector<int>& label);
+                          const std::vector<Primitive>& primitive_of_region, double tol, std::vector<int>& label);
 
 } // namespace primitive_edit
 

@@ -4,7 +4,8 @@
 // Input:  a vcg triangle mesh, its FaceAdjacency, the passes of normal smoothing and the threads for it.
 // Output: GrowingFaces: per face the centroid, the area, the smoothed normal (smooth_face_normals.h) and
 //         `valid` (a finite centroid, a defined normal and a positive area; other faces never seed, grow or
-//         count in a share). Then the tests the phases share:
+//         count in a share) and `deleted` (the mesh's deleted faces, which keep no label). Then the tests the
+//         phases share:
 //         face_near_primitive the centroid's distance to a primitive and the normals' |cosine| (planes directly);
 //         FaceAgreement    whether a face agrees with a primitive: the centroid within tol of it and the
 //                          normal within the angle of the primitive's normal there (either side), the angle
@@ -47,6 +48,7 @@ struct GrowingFaces
   std::vector<Eigen::Vector3d> centroid, normal;
   std::vector<double> area;
   std::vector<char> valid;
+  std::vector<char> deleted;  // the mesh's deleted faces, which no phase labels
 };
 
 constexpr int kShareSampleCount = 2000; // faces sampled_share looks at, at most
@@ -61,6 +63,7 @@ GrowingFaces growing_faces(const MeshType& m, const FaceAdjacency& adj, int smoo
   g.normal = smooth_face_normals(std::move(raw), faces.area, adj, std::max(0, smoothing_iterations), 180.0, threads);
   g.centroid = std::move(faces.centroid);
   g.area = std::move(faces.area);
+  g.deleted = std::move(faces.deleted);
   assign_on_huge_pages(g.valid, n, char(0));
   for (std::size_t f = 0; f < n; ++f) {
     if (g.normal[f].isZero(0.0)) {

@@ -218,11 +218,8 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   clock.lap("dissolve");
 
   report_progress(progress, 80, "Assigning the faces between regions");
-  std::vector<char> deleted = huge_page_vector(std::size_t(face_count), char(0));
-  for (int f = 0; f < face_count; ++f)
-    deleted[std::size_t(f)] = m.face[std::size_t(f)].IsD() ? 1 : 0;
   std::vector<int>& label = regions.label;
-  assign_leftover_faces(g, adj, regions.primitive, scale.tolerance, deleted, label);
+  assign_leftover_faces(g, adj, regions.primitive, scale.tolerance, label);
   clock.lap("assign");
   relax_region_borders(g, adj, regions.primitive, scale.tolerance, label);
   clock.lap("relax");
