@@ -5,7 +5,7 @@
 // Why:    the segmentation's walks over faces (the breadth-first growth of a region, the shares over a region's
 //         face list) wait on loads whose addresses are known a few faces ahead: a face's neighbour list, then each
 //         neighbour's flags, centroid and normal, in arrays far larger than the caches. Asked for early, those
-//         loads overlap (bench/README.md: growth on the 4M-face bracket scan about a third faster).
+//         loads overlap (bench/README.md: growth on the 4M-face bracket scan about a tenth faster).
 // Cost:   O(1).
 #ifndef PRIMITIVE_EDIT_PREFETCH_H
 #define PRIMITIVE_EDIT_PREFETCH_H
