@@ -145,8 +145,15 @@ private:
 };
 
 // The shares' loads are what they wait on: the faces this many places ahead in the list are asked for early
-// (prefetch.h).
+// (prefetch.h), all that a share reads of a face.
 constexpr std::size_t kShareAhead = 8;
+
+inline void prefetch_share_face(const GrowingFaces& g, std::size_t f)
+{
+  prefetch(g.centroid.data() + f);
+  prefetch(g.normal.data() + f);
+  prefetch(g.area.data() + f);
+}
 
 // Share (by area) of the faces[i * n / count], for count = min(n, max_count) evenly strided faces, for which
 // holds(f).
@@ -158,12 +165,8 @@ double strided_share_where(const GrowingFaces& g, const std::vector<int>& faces,
   double in = 0, all = 0;
   auto at = [&](std::size_t i) { return std::size_t(faces[count == n ? i : (i * n) / count]); };
   for (std::size_t i = 0; i < count; ++i) {
-    if (i + kShareAhead < count) {
-      const std::size_t ahead = at(i + kShareAhead);
-      prefetch(g.centroid.data() + ahead);
-      prefetch(g.normal.data() + ahead);
-      prefetch(g.area.data() + ahead);
-    }
+    if (i + kShareAhead < count)
+      prefetch_share_face(g, at(i + kShareAhead));
     const int f = int(at(i));
     all += g.area[std::size_t(f)];
     if (holds(f))
@@ -186,7 +189,6 @@ inline double strided_share(const GrowingFaces& g, const Primitive& prim, const 
 // rounding of the area left). A region's refit and a type change are accepted this way (on the 1M-face peer part
 // the shares over every face took 0.065 s of the 0.15 s that growth spent accepting fits). The faces a few places
 // ahead in the list are asked for early (prefetch.h), as in strided_share_where.
-
 inline bool agreeing_share_reaches(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces,
                                    double tol, double angle, double share)
 {
@@ -203,12 +205,8 @@ inline bool agreeing_share_reaches(const GrowingFaces& g, const Primitive& prim,
   double in = 0, left = all;
   for (std::size_t i = 0; i < n; ++i) {
     const int f = faces[i];
-    if (i + kShareAhead < n) {
-      const std::size_t ahead = std::size_t(faces[i + kShareAhead]);
-      prefetch(g.centroid.data() + ahead);
-      prefetch(g.normal.data() + ahead);
-      prefetch(g.area.data() + ahead);
-    }
+    if (i + kShareAhead < n)
+      prefetch_share_face(g, std::size_t(faces[i + kShareAhead]));
     if (in / all >= share)
       return true;
     if (in + left + 1e-6 * all < share * all)
