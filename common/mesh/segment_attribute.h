@@ -133,8 +133,10 @@ void write_segment_ids(MeshType& m, const std::vector<int>& segment_of_face, con
         m.face[f].Q() = typename MeshType::FaceType::QualityType(ids[f]);
 
   if (vcg::tri::HasPerFaceColor(m)) {
-    const std::vector<vcg::Color4b> colour =
-        color_segments(m, adjacency != nullptr ? *adjacency : build_face_adjacency(m), ids);
+    // Not `adjacency ? *adjacency : build_face_adjacency(m)`: with a prvalue on one side, that copies the
+    // caller's adjacency (64 MB at 4M faces, 0.17 s of fresh pages through meshlabserver).
+    const FaceAdjacency built = adjacency != nullptr ? FaceAdjacency() : build_face_adjacency(m);
+    const std::vector<vcg::Color4b> colour = color_segments(m, adjacency != nullptr ? *adjacency : built, ids);
     for (std::size_t f = 0; f < face_count; ++f)
       if (!m.face[f].IsD() && ids[f] >= 0 && std::size_t(ids[f]) < colour.size())
         m.face[f].C() = colour[std::size_t(ids[f])];

@@ -654,6 +654,13 @@ TYPED_TEST(SegmentationTest, WriteReadRoundTripThroughAttribute)
         }
       }
     }
+    // The caller's adjacency, when given, colours exactly as the one built inside.
+    std::vector<vcg::Color4b> built(m.face.size());
+    for (size_t f = 0; f < m.face.size(); ++f)
+      built[f] = m.face[f].C();
+    write_segment_ids(m, seg, &adj);
+    for (size_t f = 0; f < m.face.size(); ++f)
+      ASSERT_EQ(m.face[f].C(), built[f]);
   }
 
   // An attribute of the right name but the wrong type is replaced, not misread.
