@@ -19,6 +19,7 @@
 #ifndef PRIMITIVE_EDIT_SEGMENT_ATTRIBUTE_H
 #define PRIMITIVE_EDIT_SEGMENT_ATTRIBUTE_H
 
+#include "common/base/huge_page_vector.h"
 #include "common/mesh/color_segments.h"
 #include "common/mesh/compact_segment_ids.h"
 #include "common/mesh/face_adjacency.h"
@@ -115,7 +116,7 @@ template <class MeshType>
 void write_segment_ids(MeshType& m, const std::vector<int>& segment_of_face, const FaceAdjacency* adjacency = nullptr)
 {
   const std::size_t face_count = m.face.size();
-  std::vector<int> ids(face_count, -1);
+  std::vector<int> ids = huge_page_vector(face_count, -1);  // fresh pages, faulted in 2 MiB at a time
   for (std::size_t f = 0; f < face_count && f < segment_of_face.size(); ++f)
     if (!m.face[f].IsD() && segment_of_face[f] >= 0)
       ids[f] = segment_of_face[f];
