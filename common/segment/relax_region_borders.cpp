@@ -1,5 +1,7 @@
 #include "common/segment/relax_region_borders.h"
 
+#include "common/base/parallel_for.h"
+
 namespace primitive_edit {
 
 int best_region_for_face(const GrowingFaces& g, const FaceAdjacency& adj,
@@ -29,12 +31,23 @@ int best_region_for_face(const GrowingFaces& g, const FaceAdjacency& adj,
 }
 
 int relax_region_borders(const GrowingFaces& g, const FaceAdjacency& adj,
-                         const std::vector<Primitive>& primitive_of_region, double tol, std::vector<int>& label)
+                         const std::vector<Primitive>& primitive_of_region, double tol, std::vector<int>& label,
+                         int threads)
 {
   const int face_count = int(label.size());
   // A face whose label and neighbours' labels are those it last stayed with would stay again: only faces
-  // with a change in their 1-ring since are looked at, which gives the moves of looking at every face.
-  std::vector<char> changed = huge_page_vector(std::size_t(face_count), char(1));
+  // with a change in their 1-ring since are looked at, which gives the moves of looking at every face. At the
+  // start that is the faces with a neighbour of another label (found on all threads): a face amid its own region
+  // could move in the first pass only after a neighbour's move, which marks it.
+  std::vector<char> changed = huge_page_vector(std::size_t(face_count), char(0));
+  parallel_for(std::size_t(face_count), threads, kFacesPerThread, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
+      for (int k = adj.offset[f]; k < adj.offset[f + 1]; ++k)
+        if (label[std::size_t(adj.neighbour[std::size_t(k)])] != label[f]) {
+          changed[f] = 1;
+          break;
+        }
+  });
   int total = 0;
   for (int pass = 0; pass < kRelaxPasses; ++pass) {
     int moved = 0;

@@ -221,7 +221,7 @@ int segment_by_primitive_growing(const MeshType& m, const FaceAdjacency& adj,
   std::vector<int>& label = regions.label;
   assign_leftover_faces(g, adj, regions.primitive, scale.tolerance, label);
   clock.lap("assign");
-  relax_region_borders(g, adj, regions.primitive, scale.tolerance, label);
+  relax_region_borders(g, adj, regions.primitive, scale.tolerance, label, params.threads);
   clock.lap("relax");
   std::vector<CarvedBlend> blends;
   if (params.carve_blends) {
