@@ -102,7 +102,9 @@ QString segment_filter_info(int filter)
            "faces left over go to the neighbouring region whose primitive is nearest, which splits a blurred "
            "edge at its bisector. Then the fillets and chamfers that the roughness hid in the two planes they "
            "join become segments of their own (Carve Fillets and Chamfers), which Fit All Segments makes the "
-           "blends of those planes." + storage;
+           "blends of those planes. They are kept on the mesh while the vertices, the blend's faces and its "
+           "planes' stay as they are (merging or splitting other segments keeps them), not in a saved file: "
+           "run Fit All Segments before saving." + storage;
   case SegmentFilters::SEGMENT_MERGE_SELECTED:
     return "Every segment touched by the face selection becomes one segment." + storage;
   case SegmentFilters::SEGMENT_SPLIT_BY_PLANE:

@@ -388,6 +388,16 @@ void check_fit_all(Decoder& in, MeshType& m, const std::vector<int>& seg, int K,
     for (auto& b : given)
       b = {int(in.u8() % (K + 2)) - 1, int(in.u8() % (K + 2)) - 1, int(in.u8() % (K + 2)) - 1};
     write_segment_blends(m, seg, given);
+    // The records name segments by their faces: read under every id shifted by one, each names the shifted ids.
+    const std::vector<SegmentBlendRecord> kept = read_segment_blends(m, seg);
+    std::vector<int> shifted = seg;
+    for (int& s : shifted)
+      s = s < 0 ? s : s + 1;
+    const std::vector<SegmentBlendRecord> moved = read_segment_blends(m, shifted);
+    FUZZ_CHECK(moved.size() == kept.size() && kept.size() <= given.size());
+    for (std::size_t i = 0; i < kept.size() && i < moved.size(); ++i)
+      FUZZ_CHECK(moved[i].segment == kept[i].segment + 1 && moved[i].plane_a == kept[i].plane_a + 1 &&
+                 moved[i].plane_b == kept[i].plane_b + 1);
     const FitAllSegmentsResult r = fit_all_segments(m, seg, options);
     if (r.status.ok()) {
       FUZZ_CHECK(r.segment_count() == K && r.primitives.size() == size_t(K) && !r.snap);

@@ -30,7 +30,7 @@ struct KeptSurfaceRoughness
 
 constexpr const char* kSurfaceRoughnessAttributeName = "SurfaceRoughness";
 
-// FNV-1a's 64-bit offset basis and prime (vertex_positions_hash, segment_ids_hash in segment_blends_attribute.h).
+// FNV-1a's 64-bit offset basis and prime (vertex_positions_hash, segment_signatures in segment_blends_attribute.h).
 constexpr std::uint64_t kFnvOffsetBasis = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
 
 // FNV-1a over every live vertex's coordinates (as doubles), a 64-bit word at a time: each step is a bijection of

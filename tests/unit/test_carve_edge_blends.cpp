@@ -181,7 +181,9 @@ TEST(CarveEdgeBlends, BlendTakingOverAThirdOfAPlaneIsNotCarved)
   }
 }
 
-TEST(SegmentBlendsAttribute, ReadBackOnlyForTheSameVerticesAndSegments)
+// A record follows its three segments through edits elsewhere and renumbered ids, and goes with an edit of one of
+// them or a move of the vertices.
+TEST(SegmentBlendsAttribute, ReadBackWhileItsSegmentsAreAsTheyWere)
 {
   TMesh m;
   std::vector<int> truth;
@@ -189,16 +191,38 @@ TEST(SegmentBlendsAttribute, ReadBackOnlyForTheSameVerticesAndSegments)
   std::vector<int> seg(m.face.size(), 0);
   seg[0] = 1;
   seg[1] = 2;
+  for (std::size_t f = seg.size() / 2; f < seg.size(); ++f)
+    seg[f] = 3;
   const std::vector<SegmentBlendRecord> blends = {{2, 0, 1}};
   EXPECT_TRUE(read_segment_blends(m, seg).empty()); // none written
   write_segment_blends(m, seg, blends);
   ASSERT_EQ(read_segment_blends(m, seg).size(), 1u);
   EXPECT_EQ(read_segment_blends(m, seg)[0].segment, 2);
+
+  std::vector<int> split = seg; // segment 3 split in two: the blend's segments are as they were
+  for (std::size_t f = 3 * seg.size() / 4; f < seg.size(); ++f)
+    split[f] = 4;
+  ASSERT_EQ(read_segment_blends(m, split).size(), 1u);
+  EXPECT_EQ(read_segment_blends(m, split)[0].segment, 2);
+
+  std::vector<int> renumbered = seg; // ids compacted after a merge elsewhere: 0 -> 1, 1 -> 2, 2 -> 0
+  for (int& s : renumbered)
+    s = s == 3 ? 3 : (s + 1) % 3;
+  const std::vector<SegmentBlendRecord> moved = read_segment_blends(m, renumbered);
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_EQ(moved[0].segment, 0);
+  EXPECT_EQ(moved[0].plane_a, 1);
+  EXPECT_EQ(moved[0].plane_b, 2);
+
   std::vector<int> merged = seg;
-  merged[1] = 1; // segments edited
+  merged[1] = 1; // the blend's segment merged into one of its planes
   EXPECT_TRUE(read_segment_blends(m, merged).empty());
+  std::vector<int> grown = seg;
+  grown[2] = 2; // the blend's segment took a face of its plane
+  EXPECT_TRUE(read_segment_blends(m, grown).empty());
   m.vert[0].P()[0] += 0.001f; // vertices moved (a snap)
   EXPECT_TRUE(read_segment_blends(m, seg).empty());
+  m.ClearAttributes(); // vcg's ~TriMesh leaves per-mesh attributes allocated
 }
 
 TEST(DescribeCarvedBlends, OneLineForTheLog)
