@@ -110,7 +110,9 @@ QString segment_filter_info(int filter)
   case SegmentFilters::SEGMENT_SPLIT_BY_PLANE:
     return "Cuts a segment (or the segments of the selected faces) by a plane: the faces on each side, and "
            "each connected piece of them, become segments of their own. A face goes to the side of its "
-           "centroid. The batch form of drawing a split line in the edit tool." + storage;
+           "centroid; a piece of fewer than " + QString::number(kMinSplitPieceFaces) + " faces (a sliver where "
+           "the plane grazes the surface) joins the neighbouring piece of its segment. The batch form of drawing "
+           "a split line in the edit tool." + storage;
   case SegmentFilters::SEGMENT_SPLIT_BY_SELECTION:
     return "The selected faces leave their segments and form one new segment." + storage;
   case SegmentFilters::SEGMENT_SELECT:
@@ -340,7 +342,9 @@ Status SegmentFilters::splitByPlane(MeshModel& mm, const Arguments& parlst, Run&
     segments.push_back(segment);
   }
   const FaceAdjacency adjacency = build_face_adjacency(mm.cm);
-  const int after = split_segments_by_plane(mm.cm, adjacency, segment_of_face, segments, point, normal);
+  SplitOptions options;
+  options.min_piece_faces = kMinSplitPieceFaces;  // as the edit tool's cut: slivers join their neighbour
+  const int after = split_segments_by_plane(mm.cm, adjacency, segment_of_face, segments, point, normal, options);
   storeSegments(mm, segment_of_face, &adjacency);
   run.logf("Segment: Split by Plane: %d segment(s) cut into %d pieces; %d segments before, %d after.",
       int(segments.size()), int(segments.size()) + after - before, before, after);

@@ -251,8 +251,20 @@ int check_manual_edits(Decoder& in, const MeshType& m, const FaceAdjacency& adj,
     for (size_t f = 0; f < m.face.size(); ++f)
       split_options.cuttable.push_back(char(in.bit()));
   split_options.min_piece_faces = in.u8() % 16;
+  const std::vector<int> former = seg;
   K = split_segments_by_plane(m, adj, seg, listed, params.plane_point, params.plane_normal, split_options);
   check_segmentation(m, seg, K);
+  // Every piece has min_piece_faces faces or is all of its former segment.
+  std::vector<int> former_size(former.size() + 1, 0), piece_size(std::size_t(std::max(K, 0)), 0);
+  for (size_t f = 0; f < seg.size(); ++f)
+    if (former[f] >= 0 && seg[f] >= 0) {
+      ++former_size[std::size_t(former[f])];
+      ++piece_size[std::size_t(seg[f])];
+    }
+  for (size_t f = 0; f < seg.size(); ++f)
+    if (former[f] >= 0 && seg[f] >= 0)
+      FUZZ_CHECK(piece_size[std::size_t(seg[f])] >= std::min(split_options.min_piece_faces,
+                                                              former_size[std::size_t(former[f])]));
   K = move_faces_to_new_segment(seg, selection);
   check_segmentation(m, seg, K);
   return K;

@@ -83,7 +83,6 @@ class PrimitiveEditSession
 public:
   using CoordType = typename MeshType::CoordType;
   static constexpr std::size_t kMaxUndo = 32;
-  static constexpr int kMinSplitPieceFaces = 10;      // a split leaves no smaller piece
   static constexpr double kImplausibleFitScale = 100;  // see implausible_size
 
   // Starts editing m. Refuses (the status says why) when m cannot be edited: empty, a point cloud, or

@@ -48,6 +48,30 @@ void absorb_small_pieces(const FaceAdjacency& adj, const std::vector<int>& forme
     if (root != piece)
       into[std::size_t(piece - first_piece)] = root;
   }
+  // A piece still small after that (one that touches no other piece of its segment, such as faces that lay apart
+  // from the segment's body before the cut, or a cluster of small pieces) joins the segment's largest piece
+  // instead of becoming a segment of a few faces.
+  std::vector<int> former_of(piece_count, -1);
+  for (std::size_t f = 0; f < segment_of_face.size(); ++f)
+    if (segment_of_face[f] >= first_piece)
+      former_of[std::size_t(segment_of_face[f] - first_piece)] = former[f];
+  std::map<int, int> largest;  // former segment -> its largest piece
+  for (std::size_t i = 0; i < piece_count; ++i) {
+    auto [it, added] = largest.emplace(former_of[i], first_piece + int(i));
+    if (!added && size[i] > size[std::size_t(it->second - first_piece)])
+      it->second = first_piece + int(i);
+  }
+  std::vector<int> joined(piece_count, 0);
+  for (std::size_t i = 0; i < piece_count; ++i)
+    joined[std::size_t(find(first_piece + int(i)) - first_piece)] += size[i];
+  for (std::size_t i = 0; i < piece_count; ++i) {
+    const int piece = first_piece + int(i);
+    if (into[i] == piece && joined[i] < min_faces) {
+      const int root = find(largest[former_of[i]]);
+      if (root != piece)
+        into[i] = root;
+    }
+  }
   for (int& s : segment_of_face)
     if (s >= first_piece)
       s = find(s);

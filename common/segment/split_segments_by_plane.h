@@ -9,7 +9,8 @@
 //         positive side; a NaN centroid as the negative side); the segment is cut between neighbouring faces
 //         on opposite sides when both may be cut, and every connected piece becomes its own segment. A piece
 //         of fewer than min_piece_faces faces joins the neighbouring piece of the same former segment it
-//         shares most edges with (slivers where the plane grazes the surface are not segments). Other
+//         shares most edges with (slivers where the plane grazes the surface are not segments), and one still
+//         that small the former segment's largest piece (stray faces of the segment stay in it). Other
 //         segments are untouched. Ids are compacted to 0..K-1. Returns K.
 // Complexity: O(F + adjacency size + L log L) for L listed ids; iterative flood fill.
 #ifndef PRIMITIVE_EDIT_SPLIT_SEGMENTS_BY_PLANE_H
@@ -30,6 +31,10 @@
 
 namespace primitive_edit {
 
+// The smallest piece a cut by hand leaves, in the edit tool and the filter alike: where the plane grazes the
+// surface it cuts off slivers of a few faces, no segment to fit.
+constexpr int kMinSplitPieceFaces = 10;
+
 struct SplitOptions
 {
   std::vector<char> cuttable;  // per face: the plane may cut next to it; empty: everywhere
@@ -39,7 +44,9 @@ struct SplitOptions
 namespace split_detail {
 
 // Joins every piece (id >= first_piece) of fewer than min_faces faces to the neighbouring piece of the same
-// former segment it shares most edges with; a piece without such a neighbour stays. O(F + adjacency).
+// former segment it shares most edges with; a piece still under min_faces then (without such a neighbour, or
+// all of them small) joins its former segment's largest piece, so that every piece has min_faces faces or is
+// all of its former segment. O(F + adjacency log F).
 void absorb_small_pieces(const FaceAdjacency& adj, const std::vector<int>& former, int first_piece,
                          int min_faces, std::vector<int>& segment_of_face);
 

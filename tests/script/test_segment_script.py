@@ -92,6 +92,19 @@ def main():
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script2)
     c.check(code == 0 and "segment 6 selected" in log, "a reopened PLY has its segments back")
 
+    # A plane that grazes the top's corner would cut off one face: a sliver is no segment, it stays in its own.
+    script4 = os.path.join(args.workdir, "graze.mlx")
+    write_mlx(script4, [
+        select("z0 > 3.99 && z1 > 3.99 && z2 > 3.99 && x0 < 4.99 && x1 < 4.99 && x2 < 4.99"),
+        ("Segment: Split by Plane", [param("Segment", -1, "RichInt"),
+                                     param("PlanePoint", (0.35, 0.35, 4), "RichPoint3f"),
+                                     param("PlaneNormal", (1, 1, 0), "RichPoint3f")]),
+    ])
+    out4 = os.path.join(args.workdir, "grazed.ply")
+    code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script4, out4, "fq")
+    c.check(code == 0 and "cut into 1 pieces; 7 segments before, 7 after" in log,
+            "a cut grazing a corner leaves no one-face segment")
+
     # A bad segment id: the filter fails and says why in the log.
     script3 = os.path.join(args.workdir, "bad.mlx")
     write_mlx(script3, [("Segment: Select Segment", [param("Segment", 99, "RichInt")])])

@@ -467,7 +467,7 @@ TYPED_TEST(EditSessionTest, StrokeCutsOnlyWhereItCrossesTheSegment)
   for (int id : s.segment_of_face())
     ++size[std::size_t(id)];
   for (int n : size)
-    EXPECT_GE(n, PrimitiveEditSession<TypeParam>::kMinSplitPieceFaces);
+    EXPECT_GE(n, kMinSplitPieceFaces);
 }
 
 TYPED_TEST(EditSessionTest, ApplyFarBeyondTheSegmentWaitsForConfirmation)

@@ -111,6 +111,13 @@ void expect_valid_segmentation(const M& m, const std::vector<int>& seg, int K)
   EXPECT_EQ(next, K) << "some id below K is unused";
 }
 
+template <class M>
+Eigen::Vector3d face_centroid(const M& m, size_t f)
+{
+  const auto c = (m.face[f].cP(0) + m.face[f].cP(1) + m.face[f].cP(2)) / 3;
+  return {double(c[0]), double(c[1]), double(c[2])};
+}
+
 // vcg's ~TriMesh does not free per-face attributes (its ClearAttributes call is commented out): tests that
 // write the SegmentId attribute release it on exit so that LeakSanitizer stays quiet.
 template <class M>
@@ -390,8 +397,7 @@ TYPED_TEST(SegmentationTest, SplitByPlaneSeparatesSidesAndConnectedPieces)
     size_t best = 0;
     double best_distance = std::numeric_limits<double>::infinity();
     for (size_t f = 0; f < m.face.size(); ++f) {
-      const auto c = (m.face[f].cP(0) + m.face[f].cP(1) + m.face[f].cP(2)) / 3;
-      const double distance = (Eigen::Vector3d(double(c[0]), double(c[1]), double(c[2])) - p).norm();
+      const double distance = (face_centroid(m, f) - p).norm();
       if (distance < best_distance) {
         best_distance = distance;
         best = f;
@@ -435,6 +441,41 @@ TYPED_TEST(SegmentationTest, SplitByPlaneSeparatesSidesAndConnectedPieces)
   K = split_segments_by_plane(m, adj, seg, {0, 1}, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
   EXPECT_EQ(K, 9);
   EXPECT_EQ(seg, before);
+}
+
+// A segment with a face apart from its body (as the scan segmentation leaves them) cut with a smallest piece: the
+// stray face stays in the segment's largest piece instead of becoming a segment of one face.
+TYPED_TEST(SegmentationTest, SplitByPlaneKeepsStrayFacesInTheirSegment)
+{
+  TypeParam m;
+  make_grid_cube(m, 8);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  std::vector<int> seg;
+  ASSERT_EQ(segment_by_normal_angle(m, adj, SegmentByNormalAngleParams{}, seg), 6);
+  auto centroid = [&](size_t f) { return face_centroid(m, f); };
+  size_t top_face = 0, stray = 0;
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    top_face = centroid(f).z() > 0.99 ? f : top_face;
+    stray = centroid(f).z() < -0.99 ? f : stray;
+  }
+  const int top = seg[top_face];
+  seg[stray] = top;  // one face of the bottom in the top's segment
+  SplitOptions options;
+  options.min_piece_faces = kMinSplitPieceFaces;
+  const int K =
+      split_segments_by_plane(m, adj, seg, {top}, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), options);
+  expect_valid_segmentation(m, seg, K);
+  EXPECT_EQ(K, 7) << "the top's two halves and the other five sides";
+  std::vector<int> size(std::size_t(K), 0);
+  for (int s : seg)
+    ++size[std::size_t(s)];
+  for (int n : size)
+    EXPECT_GE(n, kMinSplitPieceFaces);
+  const int half = seg[stray];
+  int top_faces_with_it = 0;
+  for (size_t f = 0; f < m.face.size(); ++f)
+    top_faces_with_it += seg[f] == half && centroid(f).z() > 0.99 ? 1 : 0;
+  EXPECT_EQ(top_faces_with_it, 64) << "it went with one half of the top";
 }
 
 TYPED_TEST(SegmentationTest, MoveFacesToNewSegment)
