@@ -34,6 +34,14 @@
 
 namespace primitive_edit {
 
+// The window a blend is judged in, in fit tolerances (the segmentation's carve, Fit All's found blends): the points
+// within the reach of the planes' line, setbacks searched up to the largest; at most kBlendPoints of them; and the
+// log-likelihood gain over the sharp edge that makes a blend.
+constexpr double kBlendReachTolerances = 5.0;
+constexpr double kBlendSetbackTolerances = 4.0;
+constexpr int kBlendPoints = 1000;
+constexpr double kMinBlendGain = 10.0;
+
 constexpr double kBlendOutlierShare = 0.1;
 constexpr double kChamferGainMargin = 0.1; // a chamfer's gain must exceed the fillet's by this share
 constexpr int kBlendSetbackSteps = 10; // the coarse grid of setbacks up to the largest

@@ -4,6 +4,7 @@
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
+#include "common/geometry/edge_blend_likelihood.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,14 +54,69 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
   return best;
 }
 
+// How much likelier the blend makes the samples of its segment and of its planes about their edge than the sharp
+// edge does, as the segmentation's carve measures it (edge_blend_likelihood.h; the planes' samples beyond the
+// largest setback give the scatter): a blend standing off its edge by less than the roughness shows here, not in
+// its RMS. 0 when there is no such window.
+double blend_gain(const SegmentEdgeBlend& blend, const SegmentSamples& own, const SegmentSamples& a,
+                  const SegmentSamples& b, const Primitive& pa, const Primitive& pb, double tolerance)
+{
+  const EdgeSection& section = blend.section;
+  const double reach = kBlendReachTolerances * tolerance, max_setback = kBlendSetbackTolerances * tolerance;
+  if (!(tolerance > 0) || !(blend.setback < max_setback) || own.points.rows() == 0)
+    return 0;
+  const Eigen::VectorXd along_line = (own.points.rowwise() - section.origin.transpose()) * section.direction;
+  const double lo = along_line.minCoeff(), hi = along_line.maxCoeff();
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> weights;
+  double sum2 = 0, scatter_weight = 0;
+  auto take = [&](const SegmentSamples& s, const Eigen::Vector3d* ray, const Primitive* plane) {
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+      const Eigen::Vector3d p = s.points.row(i).transpose();
+      const double t = (p - section.origin).dot(section.direction);
+      if (ray) {
+        if (t < lo || t > hi || in_section(section, p).norm() > std::sqrt(2.0) * reach)
+          continue;
+        const double along = distance_along(section, *ray, p);
+        if (along > max_setback && along < reach) {
+          const double d = (p - plane->origin).dot(plane->axis);
+          sum2 += s.weights[i] * d * d;
+          scatter_weight += s.weights[i];
+        }
+      }
+      points.push_back(p);
+      weights.push_back(s.weights[i]);
+    }
+  };
+  take(own, nullptr, nullptr);
+  take(a, &section.ray_a, &pa);
+  take(b, &section.ray_b, &pb);
+  if (!(scatter_weight > 0))
+    return 0;
+  const std::size_t count = std::min(points.size(), std::size_t(kBlendPoints));
+  Eigen::MatrixX3d P{Eigen::Index(count), 3};
+  Eigen::VectorXd W{Eigen::Index(count)};
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t k = i * points.size() / count;
+    P.row(Eigen::Index(i)) = points[k].transpose();
+    W[Eigen::Index(i)] = weights[k];
+  }
+  const double spread = std::max(std::sqrt(sum2 / scatter_weight), 0.1 * tolerance);
+  const double sharp = edge_blend_cost(section, P, W, spread, reach, blend.form, 0.0);
+  const double rounded = edge_blend_cost(section, P, W, spread, reach, blend.form, blend.setback);
+  return (sharp - rounded) * double(count);
+}
+
 // The best-scoring blend of segment s between any two of the planes it touches, better than its own primitive.
+// Failing that, the blend its samples and its planes' make likeliest against the sharp edge, by kMinBlendGain or
+// more (blend_gain): the test the segmentation's carve made, for a segmentation that no longer has its records.
 std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::optional<Primitive>>& primitives,
-                                              const OwnFitScore& own,
+                                              const std::vector<SegmentSamples>& samples, const OwnFitScore& own,
                                               const std::vector<const SegmentContact*>& touching,
                                               const std::optional<PrimitiveType>& type)
 {
-  double best_score = own.score;
-  std::optional<SegmentEdgeBlend> chosen;
+  double best_score = own.score, best_gain = kMinBlendGain;
+  std::optional<SegmentEdgeBlend> chosen, likeliest;
   for (std::size_t i = 0; i < touching.size(); ++i)
     for (std::size_t j = i + 1; j < touching.size(); ++j) {
       const int a = touching[i]->a == s ? touching[i]->b : touching[i]->a;
@@ -68,15 +124,24 @@ std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::opti
       const std::optional<SegmentEdgeBlend> blend = blend_between(s, a, b, *primitives[std::size_t(a)],
                                                                   *primitives[std::size_t(b)], *touching[i],
                                                                   *touching[j], own.sample, own.cap, type);
-      if (!blend || !(blend->rms <= std::min(own.cap, kEdgeBlendRmsRatio * own.rms)))
+      if (!blend)
         continue;
       const double score = type_score(blend->rms, 1, own.diagonal);
-      if (score < best_score) {
+      if (blend->rms <= std::min(own.cap, kEdgeBlendRmsRatio * own.rms) && score < best_score) {
         best_score = score;
         chosen = blend;
       }
+      if (chosen)
+        continue;
+      const double gain = blend_gain(*blend, samples[std::size_t(s)], samples[std::size_t(a)],
+                                     samples[std::size_t(b)], *primitives[std::size_t(a)],
+                                     *primitives[std::size_t(b)], own.cap);
+      if (gain >= best_gain) {
+        best_gain = gain;
+        likeliest = blend;
+      }
     }
-  return chosen;
+  return chosen ? chosen : likeliest;
 }
 
 // The blend the record gives segment r.segment, when it still touches both planes, each border lies on its plane's
@@ -152,7 +217,7 @@ std::vector<SegmentEdgeBlend> fit_edge_blends(const std::vector<std::optional<Pr
     if (!own)
       continue;
     if (std::optional<SegmentEdgeBlend> blend =
-            best_blend_of(s, primitives, *own, planes_of[std::size_t(s)], type_of(s)))
+            best_blend_of(s, primitives, samples, *own, planes_of[std::size_t(s)], type_of(s)))
       candidates.push_back(*blend);
   }
   std::stable_sort(candidates.begin(), candidates.end(),

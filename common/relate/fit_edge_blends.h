@@ -22,8 +22,16 @@
 //         - at least kEdgeBlendSectorShare of the segment's weight lies between its tangent lines;
 //         - its RMS is within the tolerance and at most kEdgeBlendRmsRatio times that of the segment's own
 //           primitive, measured alike (the blend's single parameter must not buy a worse fit), and
-//         - its score (type_score, one parameter) is below the own primitive's.
-//         Of several pairs of planes, the best score is the segment's candidate. A face between two planes is
+//         - its score (type_score, one parameter) is below the own primitive's;
+//         or, when no pair passes those, when the segment's samples and its planes' about their edge (within
+//         kBlendReachTolerances tolerances of it, along the segment's extent) are likelier under the blend than
+//         under the sharp edge by kMinBlendGain or more, with the planes' own scatter beyond
+//         kBlendSetbackTolerances tolerances (edge_blend_likelihood.h): the test the segmentation's carve makes,
+//         for a segment between planes that was not carved, or whose record a save has lost. Waves of a scan's
+//         roughness wider than a narrow blend tilt its own fit across it (the bracket's 0.8 mm chamfer 33 on its
+//         true segment: its own plane 45 degrees off), so no RMS takes the blend, while the edge's faces still
+//         show it.
+//         Of several pairs of planes, the best score (else the largest gain) is the segment's candidate. A face between two planes is
 //         either their blend or a plane with blends on both sides (a 3 mm wall between a fillet and a chamfer
 //         scores as a large fillet of them too): the candidates are taken narrowest first, and a segment that
 //         is already a blend's plane, or whose planes are blends, is skipped.
@@ -35,7 +43,8 @@
 //         planes since it was carved between them; its borders need not agree); its planes are then no
 //         candidates (a wall between a given blend and another plane is not their blend).
 // Cost:   O(contacts) to list each segment's planes, then per segment O(kEdgeBlendPoints) for its own RMS and per
-//         pair of its planes whose borders agree O(kEdgeBlendPoints) for each form.
+//         pair of its planes whose borders agree O(kEdgeBlendPoints) for each form; for the likelihood, O(samples
+//         of the segment and its two planes) to take the window and O(kBlendPoints) per cost.
 #ifndef PRIMITIVE_EDIT_FIT_EDGE_BLENDS_H
 #define PRIMITIVE_EDIT_FIT_EDGE_BLENDS_H
 

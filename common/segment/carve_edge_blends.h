@@ -43,10 +43,6 @@
 
 namespace primitive_edit {
 
-constexpr double kBlendReachTolerances = 5.0;
-constexpr double kBlendSetbackTolerances = 4.0;
-constexpr int kBlendPoints = 1000;
-constexpr double kMinBlendGain = 10.0;
 constexpr double kMaxBlendShare = 1.0 / 3.0; // of a plane region's area its blends may take
 constexpr int kMinBlendBorderEdges = 20; // shared edges below which two regions have no edge worth a blend
 

@@ -195,6 +195,42 @@ TEST(EdgeBlends, ARoughChamferIsThePlaneAtTheBisector)
   EXPECT_NEAR(std::abs((Eigen::Vector3d(0, 0, 4.2) - b->primitive.origin).dot(b->primitive.axis)), 0, 1e-9);
 }
 
+// A 0.8 mm chamfer whose strip the roughness tilts across, as waves wider than the strip do on a CT scan (its ends
+// 0.3 mm off the chamfer on either side, noise 0.1): its own plane fits it far closer than the chamfer, so no RMS
+// test takes the chamfer, yet with its planes' samples about the edge the chamfer is far likelier than the sharp
+// edge, as the segmentation's carve would have found it. A strip of the top beside a sharp edge is no blend.
+TEST(EdgeBlends, ATiltedRoughChamferIsFoundByItsLikelihood)
+{
+  const double tilt = 0.3, sigma = 0.1;
+  TopEdge e = top_edge(BlendForm::Chamfer, 0.8, sigma);
+  const Eigen::Vector2d across = Eigen::Vector2d(-1, 1).normalized();
+  e.samples[TopEdge::Blend] =
+      strip(Eigen::Vector2d(0.8, 5) - tilt * across, Eigen::Vector2d(0, 4.2) + tilt * across, {-1, 1}, 2000, sigma, 3);
+  e.primitives[TopEdge::Blend] = own_fit(e.samples[TopEdge::Blend], sigma);
+  const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(e.primitives, e.samples, e.contacts, sigma, 0.0);
+  const SegmentEdgeBlend* b = blend_of(blends, TopEdge::Blend);
+  ASSERT_TRUE(b);
+  EXPECT_NEAR(b->setback, 0.8, 1e-9);
+
+  // The faces within 0.8 of a sharp edge on both sides as the segment: its borders and sector are a chamfer's,
+  // its own plane fits it closer than the chamfer, and its points say sharp edge.
+  TopEdge sharp = top_edge(BlendForm::Chamfer, 0.8, sigma);
+  sharp.samples[TopEdge::Top] = strip({0.8, 5}, {20.8, 5}, {0, 1}, 3000, sigma, 1);
+  sharp.samples[TopEdge::Side] = strip({0, 0}, {0, 4.2}, {-1, 0}, 1500, sigma, 2);
+  const SegmentSamples top = strip({0, 5}, {0.8, 5}, {0, 1}, 1000, sigma, 3);
+  const SegmentSamples side = strip({0, 4.2}, {0, 5}, {-1, 0}, 1000, sigma, 4);
+  SegmentSamples& corner = sharp.samples[TopEdge::Blend];
+  corner.points.resize(2000, 3);
+  corner.points << top.points, side.points;
+  corner.normals.resize(2000, 3);
+  corner.normals << top.normals, side.normals;
+  corner.weights.resize(2000);
+  corner.weights << top.weights, side.weights;
+  corner.area = top.area + side.area;
+  sharp.primitives[TopEdge::Blend] = own_fit(corner, sigma);
+  EXPECT_TRUE(fit_edge_blends(sharp.primitives, sharp.samples, sharp.contacts, sigma, 0.0).empty());
+}
+
 // Asked to be another type, a segment is a blend of that type or none.
 TEST(EdgeBlends, KeepsTheTypesAsked)
 {
