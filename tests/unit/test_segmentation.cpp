@@ -452,11 +452,10 @@ TYPED_TEST(SegmentationTest, SplitByPlaneKeepsStrayFacesInTheirSegment)
   const FaceAdjacency adj = build_face_adjacency(m);
   std::vector<int> seg;
   ASSERT_EQ(segment_by_normal_angle(m, adj, SegmentByNormalAngleParams{}, seg), 6);
-  auto centroid = [&](size_t f) { return face_centroid(m, f); };
   size_t top_face = 0, stray = 0;
   for (size_t f = 0; f < m.face.size(); ++f) {
-    top_face = centroid(f).z() > 0.99 ? f : top_face;
-    stray = centroid(f).z() < -0.99 ? f : stray;
+    top_face = face_centroid(m, f).z() > 0.99 ? f : top_face;
+    stray = face_centroid(m, f).z() < -0.99 ? f : stray;
   }
   const int top = seg[top_face];
   seg[stray] = top;  // one face of the bottom in the top's segment
@@ -474,7 +473,7 @@ TYPED_TEST(SegmentationTest, SplitByPlaneKeepsStrayFacesInTheirSegment)
   const int half = seg[stray];
   int top_faces_with_it = 0;
   for (size_t f = 0; f < m.face.size(); ++f)
-    top_faces_with_it += seg[f] == half && centroid(f).z() > 0.99 ? 1 : 0;
+    top_faces_with_it += seg[f] == half && face_centroid(m, f).z() > 0.99 ? 1 : 0;
   EXPECT_EQ(top_faces_with_it, 64) << "it went with one half of the top";
 }
 
