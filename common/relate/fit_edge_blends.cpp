@@ -5,6 +5,7 @@
 #include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/geometry/edge_blend_likelihood.h"
+#include "common/geometry/edge_blend_window.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,56 +56,38 @@ std::optional<SegmentEdgeBlend> blend_between(int s, int a, int b, const Primiti
 }
 
 // How much likelier the blend makes the samples of its segment and of its planes about their edge than the sharp
-// edge does, as the segmentation's carve measures it (edge_blend_likelihood.h; the planes' samples beyond the
+// edge does, as the segmentation's carve measures it (edge_blend_window.h: the planes' samples beyond the
 // largest setback give the scatter): a blend standing off its edge by less than the roughness shows here, not in
 // its RMS. 0 when there is no such window.
 double blend_gain(const SegmentEdgeBlend& blend, const SegmentSamples& own, const SegmentSamples& a,
                   const SegmentSamples& b, const Primitive& pa, const Primitive& pb, double tolerance)
 {
   const EdgeSection& section = blend.section;
-  const double reach = kBlendReachTolerances * tolerance, max_setback = kBlendSetbackTolerances * tolerance;
-  if (!(tolerance > 0) || !(blend.setback < max_setback) || own.points.rows() == 0)
+  EdgeBlendWindow window(section, tolerance);
+  if (!(tolerance > 0) || !(blend.setback < window.max_setback()) || own.points.rows() == 0)
     return 0;
   const Eigen::VectorXd along_line = (own.points.rowwise() - section.origin.transpose()) * section.direction;
   const double lo = along_line.minCoeff(), hi = along_line.maxCoeff();
-  std::vector<Eigen::Vector3d> points;
-  std::vector<double> weights;
-  double sum2 = 0, scatter_weight = 0;
-  auto take = [&](const SegmentSamples& s, const Eigen::Vector3d* ray, const Primitive* plane) {
+  for (Eigen::Index i = 0; i < own.points.rows(); ++i)
+    window.add(own.points.row(i).transpose(), own.weights[i]);
+  auto take_plane = [&](const SegmentSamples& s, const Eigen::Vector3d& ray, const Primitive& plane) {
     for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
       const Eigen::Vector3d p = s.points.row(i).transpose();
       const double t = (p - section.origin).dot(section.direction);
-      if (ray) {
-        if (t < lo || t > hi || in_section(section, p).norm() > std::sqrt(2.0) * reach)
-          continue;
-        const double along = distance_along(section, *ray, p);
-        if (along > max_setback && along < reach) {
-          const double d = (p - plane->origin).dot(plane->axis);
-          sum2 += s.weights[i] * d * d;
-          scatter_weight += s.weights[i];
-        }
-      }
-      points.push_back(p);
-      weights.push_back(s.weights[i]);
+      if (t >= lo && t <= hi && in_section(section, p).norm() <= std::sqrt(2.0) * window.reach())
+        window.add_on_plane(p, s.weights[i], ray, plane);
     }
   };
-  take(own, nullptr, nullptr);
-  take(a, &section.ray_a, &pa);
-  take(b, &section.ray_b, &pb);
-  if (!(scatter_weight > 0))
+  take_plane(a, section.ray_a, pa);
+  take_plane(b, section.ray_b, pb);
+  const std::optional<EdgeBlendSample> sample = window.sample();
+  if (!sample)
     return 0;
-  const std::size_t count = std::min(points.size(), std::size_t(kBlendPoints));
-  Eigen::MatrixX3d P{Eigen::Index(count), 3};
-  Eigen::VectorXd W{Eigen::Index(count)};
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t k = i * points.size() / count;
-    P.row(Eigen::Index(i)) = points[k].transpose();
-    W[Eigen::Index(i)] = weights[k];
-  }
-  const double spread = std::max(std::sqrt(sum2 / scatter_weight), 0.1 * tolerance);
-  const double sharp = edge_blend_cost(section, P, W, spread, reach, blend.form, 0.0);
-  const double rounded = edge_blend_cost(section, P, W, spread, reach, blend.form, blend.setback);
-  return (sharp - rounded) * double(count);
+  const double sharp =
+      edge_blend_cost(section, sample->points, sample->weights, sample->spread, window.reach(), blend.form, 0.0);
+  const double rounded = edge_blend_cost(section, sample->points, sample->weights, sample->spread, window.reach(),
+                                         blend.form, blend.setback);
+  return (sharp - rounded) * double(sample->points.rows());
 }
 
 // The best-scoring blend of segment s between any two of the planes it touches, better than its own primitive.

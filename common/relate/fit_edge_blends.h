@@ -26,15 +26,15 @@
 //         or, when no pair passes those, when the segment's samples and its planes' about their edge (within
 //         kBlendReachTolerances tolerances of it, along the segment's extent) are likelier under the blend than
 //         under the sharp edge by kMinBlendGain or more, with the planes' own scatter beyond
-//         kBlendSetbackTolerances tolerances (edge_blend_likelihood.h): the test the segmentation's carve makes,
-//         for a segment between planes that was not carved, or whose record a save has lost. Waves of a scan's
-//         roughness wider than a narrow blend tilt its own fit across it (the bracket's 0.8 mm chamfer 33 on its
-//         true segment: its own plane 45 degrees off), so no RMS takes the blend, while the edge's faces still
-//         show it.
-//         Of several pairs of planes, the best score (else the largest gain) is the segment's candidate. A face between two planes is
-//         either their blend or a plane with blends on both sides (a 3 mm wall between a fillet and a chamfer
-//         scores as a large fillet of them too): the candidates are taken narrowest first, and a segment that
-//         is already a blend's plane, or whose planes are blends, is skipped.
+//         kBlendSetbackTolerances tolerances (edge_blend_window.h, edge_blend_likelihood.h): the test the
+//         segmentation's carve makes, for a segment between planes that was not carved, or whose record a save
+//         has lost. Waves of a scan's roughness wider than a narrow blend tilt its own fit across it (the
+//         bracket's 0.8 mm chamfer 33 on its true segment: its own plane 45 degrees off), so no RMS takes the
+//         blend, while the edge's faces still show it.
+//         Of several pairs of planes, the best score (else the largest gain) is the segment's candidate. A face
+//         between two planes is either their blend or a plane with blends on both sides (a 3 mm wall between a
+//         fillet and a chamfer scores as a large fillet of them too): the candidates are taken narrowest first,
+//         and a segment that is already a blend's plane, or whose planes are blends, is skipped.
 //         Blends given (the segmentation's, segment_blends_attribute.h) come first and need no test of their fit:
 //         the segmentation found them against the sharp edge by the scan's own scatter, which a blend's RMS
 //         cannot show when the blend stands off its edge by less than the roughness. A given blend is taken when

@@ -3,6 +3,7 @@
 #include "common/base/parallel_for.h"
 #include "common/geometry/edge_blend.h"
 #include "common/geometry/edge_blend_likelihood.h"
+#include "common/geometry/edge_blend_window.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,32 +117,17 @@ std::optional<BlendCandidate> blend_of_pair(const GrowingFaces& g, const FaceAdj
   const std::optional<EdgeSection> section = edge_section(pa, pb, kept_a / wa, kept_b / wb, near);
   if (!section)
     return std::nullopt;
-  // The scatter of the faces beyond any blend searched, about their own plane.
-  double sum2 = 0, weight = 0;
+  EdgeBlendWindow window(*section, scale.tolerance);
   for (int f : band) {
     const bool in_a = label[std::size_t(f)] == pair.a;
-    const double along = distance_along(*section, in_a ? section->ray_a : section->ray_b, g.centroid[std::size_t(f)]);
-    if (along > max_setback && along < reach) {
-      const Primitive& own = in_a ? pa : pb;
-      const double d = (g.centroid[std::size_t(f)] - own.origin).dot(own.axis);
-      sum2 += g.area[std::size_t(f)] * d * d;
-      weight += g.area[std::size_t(f)];
-    }
+    window.add_on_plane(g.centroid[std::size_t(f)], g.area[std::size_t(f)], in_a ? section->ray_a : section->ray_b,
+                        in_a ? pa : pb);
   }
-  if (!(weight > 0))
+  const std::optional<EdgeBlendSample> sample = window.sample();
+  if (!sample)
     return std::nullopt;
-  const double sigma = std::sqrt(sum2 / weight);
-  const std::size_t count = std::min(band.size(), std::size_t(kBlendPoints));
-  Eigen::MatrixX3d points{Eigen::Index(count), 3};
-  Eigen::VectorXd weights{Eigen::Index(count)};
-  for (std::size_t i = 0; i < count; ++i) {
-    const int f = band[i * band.size() / count];
-    points.row(Eigen::Index(i)) = g.centroid[std::size_t(f)].transpose();
-    weights[Eigen::Index(i)] = g.area[std::size_t(f)];
-  }
-  // Exact data has no scatter; a tenth of the tolerance keeps the likelihood from needing every face on the profile.
-  const double spread = std::max(sigma, 0.1 * scale.tolerance);
-  const std::optional<EdgeBlendEstimate> estimate = best_edge_blend(*section, points, weights, spread, reach, max_setback);
+  const std::optional<EdgeBlendEstimate> estimate =
+      best_edge_blend(*section, sample->points, sample->weights, sample->spread, reach, max_setback);
   if (!estimate || !(estimate->gain >= kMinBlendGain) || !(estimate->setback < max_setback))
     return std::nullopt;
   // The blend must stand off the sharp edge (along the bisector) at least as far as the fillet of the smallest

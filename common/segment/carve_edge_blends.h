@@ -12,7 +12,8 @@
 //         faces of both within the reach (kBlendReachTolerances tolerances) of their common line, walked from their
 //         shared border and within its extent along the line, at most kBlendPoints of them evenly strided, are
 //         scored by best_edge_blend (edge_blend_likelihood.h) with their own scatter: the RMS distance from their
-//         plane of the faces beyond the largest setback (kBlendSetbackTolerances tolerances). A blend is carved when
+//         plane of the faces beyond the largest setback (kBlendSetbackTolerances tolerances; edge_blend_window.h).
+//         A blend is carved when
 //         - its log-likelihood gain over the sharp edge is at least kMinBlendGain;
 //         - its setback lies inside the searched range (one at the range's end is no blend of this edge: the
 //           planes are off);

@@ -1,10 +1,12 @@
 // The likelihood of points about the edge of two planes under a blend (common/geometry/edge_blend_likelihood.h): on
 // the edge of a plate (top z = 5, side y = 0, along x), points drawn uniformly along a sharp, filleted or chamfered
 // profile and moved by isotropic noise as large as a CT scan's roughness; the setback found is the true one, where
-// least squares of the distances finds a blend at the sharp edge and a small one at the fillet.
+// least squares of the distances finds a blend at the sharp edge and a small one at the fillet. And the window
+// those points are gathered in (common/geometry/edge_blend_window.h): its spread is the planes' own scatter.
 #include "common/base/constants.h"
 #include "common/geometry/edge_blend.h"
 #include "common/geometry/edge_blend_likelihood.h"
+#include "common/geometry/edge_blend_window.h"
 
 #include "test_fit_data.h"
 
@@ -109,6 +111,53 @@ TEST(EdgeBlendLikelihood, BadInputIsRefused)
   Eigen::MatrixX3d far(1, 3);
   far << 20, 30, 5;
   EXPECT_FALSE(best_edge_blend(e, far, weights, 0.5, 4.0, 3.0));
+}
+
+// Tolerance 0.5: reach 2.5, largest setback 2. Only the top's points 2-2.5 from the edge give the spread; the
+// blend's points, the top's nearer the edge and the side's beyond the reach do not.
+TEST(EdgeBlendWindow, SpreadIsThePlanesScatterBeyondTheLargestSetback)
+{
+  const EdgeSection e = plate_edge();
+  const Primitive top = test_fit::make_plane({0, 0, 5}, {0, 0, 1});
+  const Primitive side = test_fit::make_plane({0, 0, 0}, {0, -1, 0});
+  EdgeBlendWindow window(e, 0.5);
+  EXPECT_DOUBLE_EQ(window.reach(), kBlendReachTolerances * 0.5);
+  EXPECT_DOUBLE_EQ(window.max_setback(), kBlendSetbackTolerances * 0.5);
+  window.add({20, 0.5, 4.0}, 1.0);                      // the blend's: anywhere, no scatter
+  window.add_on_plane({20, 1.0, 6.0}, 1.0, e.ray_a, top); // within the largest setback
+  window.add_on_plane({20, 2.2, 5.3}, 1.0, e.ray_a, top);
+  window.add_on_plane({21, 2.3, 4.7}, 3.0, e.ray_a, top);
+  window.add_on_plane({20, 0.9, 2.0}, 1.0, e.ray_b, side); // 3 down the side: beyond the reach
+  const std::optional<EdgeBlendSample> s = window.sample();
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->spread, 0.3, 1e-12);
+  ASSERT_EQ(s->points.rows(), 5);
+  EXPECT_EQ(s->weights.sum(), 7.0);
+
+  EdgeBlendWindow exact(e, 0.5);
+  exact.add_on_plane({20, 2.2, 5.0}, 1.0, e.ray_a, top);
+  ASSERT_TRUE(exact.sample().has_value());
+  EXPECT_DOUBLE_EQ(exact.sample()->spread, 0.05); // a tenth of the tolerance
+}
+
+TEST(EdgeBlendWindow, StridesToTheLikelihoodsPointsAndNeedsAPlanesScatter)
+{
+  const EdgeSection e = plate_edge();
+  const Primitive top = test_fit::make_plane({0, 0, 5}, {0, 0, 1});
+  EdgeBlendWindow window(e, 0.5);
+  for (int i = 0; i < 3 * kBlendPoints; ++i)
+    window.add({0.01 * i, 0.5, 4.0}, 1.0);
+  EXPECT_FALSE(window.sample()) << "no plane's point beyond the largest setback";
+  window.add_on_plane({0, 2.2, 5.1}, 1.0, e.ray_a, top);
+  const std::optional<EdgeBlendSample> s = window.sample();
+  ASSERT_TRUE(s.has_value());
+  ASSERT_EQ(s->points.rows(), kBlendPoints);
+  EXPECT_EQ(s->points(0, 0), 0.0);
+  EXPECT_NEAR(s->points(1, 0), 0.01 * 3, 1e-12); // every third point, in the order added
+
+  EdgeBlendWindow none(e, 0.0);
+  none.add_on_plane({0, 2.2, 5.1}, 1.0, e.ray_a, top);
+  EXPECT_FALSE(none.sample());
 }
 
 } // namespace
