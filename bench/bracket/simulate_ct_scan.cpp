@@ -45,6 +45,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -150,7 +151,15 @@ private:
   std::vector<float> v_;
 };
 
-// vcg's TrivialWalker allocates its slice caches with new[] and never frees them.
+// MeshLab 2020.09's vcg TrivialWalker allocates its slice caches with new[] and never frees them; 2025.07's
+// keeps them in std::vector.
+template <typename Cache>
+void free_slice_cache(Cache& cache)
+{
+  if constexpr (std::is_pointer_v<Cache>)
+    delete[] cache;
+}
+
 class Walker : public vcg::tri::TrivialWalker<BMesh, Volume>
 {
 public:
@@ -160,11 +169,11 @@ public:
   ~Walker()
   {
     if (_slice_dimension > 0) {
-      delete[] _x_cs;
-      delete[] _y_cs;
-      delete[] _z_cs;
-      delete[] _x_ns;
-      delete[] _z_ns;
+      free_slice_cache(_x_cs);
+      free_slice_cache(_y_cs);
+      free_slice_cache(_z_cs);
+      free_slice_cache(_x_ns);
+      free_slice_cache(_z_ns);
     }
   }
 };
