@@ -33,23 +33,17 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tests", "script"))
 sys.path.insert(0, HERE)
-from meshlab_script import param, write_mlx  # noqa: E402
+from meshlab_script import FILTER_PARAMETERS, param, step, write_mlx  # noqa: E402
 from score_segmentation import score  # noqa: E402
 
 MEASURE = "Measure: Accuracy Against Reference"
 FIT_ALL = "Primitive: Fit All Segments"
 
 # Segmentation filters in order of preference, each with its complete parameter list (meshlabserver
-# 2020.09 asserts unless a script lists every parameter) at the filter's defaults (filter_segment.cpp):
-# name -> [(parameter, default, Rich type)].
-SEGMENTATIONS = {
-    "Segment: Auto by Primitive Fit": [("Tolerance", 0.0, "RichFloat"), ("NormalAngle", 30.0, "RichFloat"),
-                                       ("SeedPatchFaces", 60, "RichInt"), ("NormalSmoothing", 10, "RichInt"),
-                                       ("CarveBlends", True, "RichBool")],
-    "Segment: Auto by Normal Angle": [("Angle", 20.0, "RichFloat"), ("NormalSmoothing", -1, "RichInt"),
-                                      ("MinSegmentFaces", -1, "RichInt")],
-}
+# 2020.09 asserts unless a script lists every parameter) at the filter's defaults: name -> [(parameter,
+# default, Rich type)].
 PREFERRED = ["Segment: Auto by Primitive Fit", "Segment: Auto by Normal Angle"]
+SEGMENTATIONS = {name: FILTER_PARAMETERS[name] for name in PREFERRED}
 # The segmentation filters' log line with their time ("Segment: ... in N ms").
 SEGMENT_MS = re.compile(r"Segment: .* in (\d+) ms")
 
@@ -188,18 +182,11 @@ def run_scan(args, label, scan, truth, segmentation):
     for stale in (fit_json, out_ply):
         if os.path.exists(stale):
             os.remove(stale)
-    measure = [param("MeasuredMesh", 1, "RichMesh"), param("ReferenceMesh", 0, "RichMesh"),
-               param("Samples", args.samples, "RichInt"), param("Tolerance", args.tolerance, "RichFloat"),
-               param("Seed", 1, "RichInt"), param("DeviationMap", False, "RichBool")]
+    measure = step(MEASURE, MeasuredMesh=1, ReferenceMesh=0, Samples=args.samples, Tolerance=args.tolerance, Seed=1)
     seg_name, seg_params, _ = segmentation
-    filters = [(MEASURE, measure), (seg_name, seg_params),
-               (FIT_ALL, [param("Tolerance", args.fit_tolerance, "RichFloat"),
-                          param("Relations", bool(args.relations), "RichBool"),
-                          param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
-                          param("RelationCost", 1, "RichFloat"),
-                          param("Snap", True, "RichBool"),
-                          param("Export", fit_json, "RichString"), param("SharpEdges", True, "RichBool")]),
-               (MEASURE, measure)]
+    filters = [measure, (seg_name, seg_params),
+               step(FIT_ALL, Tolerance=args.fit_tolerance, Relations=bool(args.relations), Export=fit_json),
+               measure]
     script = os.path.join(work, "pipeline.mlx")
     write_mlx(script, filters)
     t0 = time.monotonic()

@@ -24,7 +24,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tests", "script"))
 sys.path.insert(0, HERE)
-from meshlab_script import param, write_mlx  # noqa: E402
+from meshlab_script import step, write_mlx  # noqa: E402
 from run_pipeline import SEGMENT_MS, SEGMENTATIONS  # noqa: E402
 
 
@@ -75,7 +75,7 @@ def main():
         raise SystemExit("time_segment_filter: no mesh at %s" % args.mesh)
     with tempfile.TemporaryDirectory() as work:
         script = os.path.join(work, "segment.mlx")
-        write_mlx(script, [(args.filter, [param(k, v, kind) for k, v, kind in SEGMENTATIONS[args.filter]])])
+        write_mlx(script, [step(args.filter)])
         xvfb, display = start_display()
         env = dict(os.environ, DISPLAY=display)
         try:

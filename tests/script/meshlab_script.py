@@ -2,7 +2,7 @@
 welded box to run the filters on.
 
 Standard library only. meshlabserver 2020.09 asserts unless a script lists every parameter of a filter,
-so scripts are written from complete parameter lists.
+so scripts are written from complete parameter lists: step() writes them from FILTER_PARAMETERS.
 """
 import argparse
 import os
@@ -166,6 +166,56 @@ def param(name, value, kind, enum_values=None):
     if kind == "RichBool":
         value = "true" if value else "false"
     return '  <Param type=%s name=%s value=%s/>\n' % (q(kind), q(name), q(str(value)))
+
+
+TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
+METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
+ENUM_VALUES = {"Type": TYPES, "Method": METHODS}
+
+# Every parameter of our filters, in the filter's order, with its default (filter_segment.cpp,
+# filter_primitive_fit.cpp, filter_measure_accuracy.cpp): (name, default, Rich type). None: the default depends on
+# the document (a point of the mesh's box, a layer), so a script must give it. tests/layout/
+# check_script_parameters.py checks the table against the plugins' own lists.
+FILTER_PARAMETERS = {
+    "Segment: Auto by Normal Angle": [("Angle", 20.0, "RichFloat"), ("NormalSmoothing", -1, "RichInt"),
+                                      ("MinSegmentFaces", -1, "RichInt")],
+    "Segment: Auto by Primitive Fit": [("Tolerance", 0.0, "RichFloat"), ("NormalAngle", 30.0, "RichFloat"),
+                                       ("SeedPatchFaces", 60, "RichInt"), ("NormalSmoothing", 10, "RichInt"),
+                                       ("CarveBlends", True, "RichBool")],
+    "Segment: Merge Selected": [],
+    "Segment: Split by Plane": [("Segment", -1, "RichInt"), ("PlanePoint", None, "RichPoint3f"),
+                                ("PlaneNormal", (1.0, 0.0, 0.0), "RichPoint3f")],
+    "Segment: Split by Selection": [],
+    "Segment: Select Segment": [("Segment", 0, "RichInt")],
+    "Primitive: Fit Segment": [("Segment", -1, "RichInt"), ("Type", 0, "RichEnum"), ("Method", 0, "RichEnum")],
+    "Primitive: Snap Segment": [("Segment", -1, "RichInt"), ("Type", 0, "RichEnum"), ("Method", 0, "RichEnum"),
+                                ("Radius", 0.0, "RichFloat"), ("Angle", 0.0, "RichFloat"),
+                                ("MajorRadius", 0.0, "RichFloat"), ("MinorRadius", 0.0, "RichFloat"),
+                                ("SharpEdges", True, "RichBool")],
+    "Primitive: Fit All Segments": [("Tolerance", 0.0, "RichFloat"), ("Relations", True, "RichBool"),
+                                    ("RelationAngle", 10.0, "RichFloat"), ("RelationDistance", 0.0, "RichFloat"),
+                                    ("RelationCost", 1.0, "RichFloat"), ("Snap", True, "RichBool"),
+                                    ("Export", "", "RichString"), ("SharpEdges", True, "RichBool")],
+    "Measure: Accuracy Against Reference": [("MeasuredMesh", None, "RichMesh"), ("ReferenceMesh", None, "RichMesh"),
+                                            ("Samples", 1000000, "RichInt"), ("Tolerance", 0.42, "RichFloat"),
+                                            ("Seed", 0, "RichInt"), ("DeviationMap", False, "RichBool")],
+}
+
+
+def step(name, **values):
+    """(name, [param lines]) for write_mlx: every parameter of our filter `name`, at its default unless given by
+    keyword. A parameter without a fixed default must be given; one the filter does not have raises."""
+    table = FILTER_PARAMETERS[name]
+    unknown = set(values) - {p for p, _, _ in table}
+    if unknown:
+        raise KeyError("%s has no parameter %s" % (name, ", ".join(sorted(unknown))))
+    lines = []
+    for p, default, kind in table:
+        value = values.get(p, default)
+        if value is None:
+            raise KeyError("%s needs %s in a script" % (name, p))
+        lines.append(param(p, value, kind, ENUM_VALUES.get(p)))
+    return name, lines
 
 
 def write_mlx(path, filters):

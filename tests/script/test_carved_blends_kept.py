@@ -7,25 +7,17 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_args, write_mlx
+from meshlab_script import Checker, read_ply, run_meshlabserver, step, test_args, write_mlx
 
 SCAN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench", "data", "bracket_scan.ply")
-SEGMENT = ("Segment: Auto by Primitive Fit",
-           [param("Tolerance", 0.0, "RichFloat"), param("NormalAngle", 30.0, "RichFloat"),
-            param("SeedPatchFaces", 60, "RichInt"), param("NormalSmoothing", 10, "RichInt"),
-            param("CarveBlends", True, "RichBool")])
-FIT_ALL = ("Primitive: Fit All Segments",
-           [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
-            param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
-            param("RelationCost", 1, "RichFloat"), param("Snap", False, "RichBool"), param("Export", "", "RichString"),
-            param("SharpEdges", False, "RichBool")])
+SEGMENT = step("Segment: Auto by Primitive Fit")
+FIT_ALL = step("Primitive: Fit All Segments", Snap=False, SharpEdges=False)
 CARVED = re.compile(r"segment (\d+) between (\d+) and (\d+)")
 FITTED_BLEND = re.compile(r"segment (\d+): (?:fillet|chamfer) of segments (\d+) and (\d+)")
 
 
 def split_by_plane(segment, point):
-    return ("Segment: Split by Plane", [param("Segment", segment, "RichInt"), param("PlanePoint", point, "RichPoint3f"),
-                                        param("PlaneNormal", (1, 0, 0), "RichPoint3f")])
+    return step("Segment: Split by Plane", Segment=segment, PlanePoint=point)
 
 
 def faces_of(path):

@@ -25,49 +25,36 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_malformed_meshes import make_all  # noqa: E402
-from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, test_args, write_mlx,  # noqa: E402
-                            write_ply)
+from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, step, test_args,  # noqa: E402
+                            write_mlx, write_ply)
 
-TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
-METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
+
+def ours(name, **values):
+    return step(name, **values) + (True,)
+
+
+def selection(expression):
+    return ("Conditional Face Selection", [param("condSelect", expression, "RichString")], False)
+
 
 # (name, params, ours): every parameter listed by name, as meshlabserver 2020.09 requires.
 FILTERS = [
-    ("Segment: Auto by Primitive Fit", [param("Tolerance", 0, "RichFloat"), param("NormalAngle", 30, "RichFloat"),
-                                        param("SeedPatchFaces", 20, "RichInt"), param("NormalSmoothing", 2, "RichInt"),
-                                        param("CarveBlends", True, "RichBool")],
-     True),
-    ("Segment: Auto by Normal Angle", [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 1, "RichInt"),
-                                       param("MinSegmentFaces", 0, "RichInt")], True),
-    ("Conditional Face Selection", [param("condSelect", "fq < 2", "RichString")], False),
-    ("Segment: Merge Selected", [], True),
-    ("Segment: Split by Plane", [param("Segment", -1, "RichInt"), param("PlanePoint", (5, 3, 2), "RichPoint3f"),
-                                 param("PlaneNormal", (1, 0, 0), "RichPoint3f")], True),
-    ("Conditional Face Selection", [param("condSelect", "x0 < 2 && x1 < 2 && x2 < 2", "RichString")], False),
-    ("Segment: Split by Selection", [], True),
-    ("Segment: Select Segment", [param("Segment", 0, "RichInt")], True),
-    ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), param("Type", 0, "RichEnum", TYPES),
-                                param("Method", 0, "RichEnum", METHODS)], True),
-    ("Primitive: Snap Segment", [param("Segment", 1, "RichInt"), param("Type", 0, "RichEnum", TYPES),
-                                 param("Method", 0, "RichEnum", METHODS),
-                                 param("Radius", 0, "RichFloat"), param("Angle", 0, "RichFloat"),
-                                 param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
-                                 param("SharpEdges", True, "RichBool")], True),
-    ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
-                                     param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
-                                     param("RelationCost", 1, "RichFloat"),
-                                     param("Snap", True, "RichBool"),
-                                     param("Export", "", "RichString"), param("SharpEdges", True, "RichBool")],
-     True),
+    ours("Segment: Auto by Primitive Fit", SeedPatchFaces=20, NormalSmoothing=2),
+    ours("Segment: Auto by Normal Angle", Angle=30, NormalSmoothing=1, MinSegmentFaces=0),
+    selection("fq < 2"),
+    ours("Segment: Merge Selected"),
+    ours("Segment: Split by Plane", PlanePoint=(5, 3, 2)),
+    selection("x0 < 2 && x1 < 2 && x2 < 2"),
+    ours("Segment: Split by Selection"),
+    ours("Segment: Select Segment"),
+    ours("Primitive: Fit Segment"),
+    ours("Primitive: Snap Segment", Segment=1),
+    ours("Primitive: Fit All Segments"),
     # The malformed mesh measured against the clean reference, then as the reference.
-    ("Measure: Accuracy Against Reference", [param("MeasuredMesh", 1, "RichMesh"),
-                                             param("ReferenceMesh", 0, "RichMesh"), param("Samples", 20000, "RichInt"),
-                                             param("Tolerance", 0.1, "RichFloat"), param("Seed", 1, "RichInt"),
-                                             param("DeviationMap", True, "RichBool")], True),
-    ("Measure: Accuracy Against Reference", [param("MeasuredMesh", 0, "RichMesh"),
-                                             param("ReferenceMesh", 1, "RichMesh"), param("Samples", 20000, "RichInt"),
-                                             param("Tolerance", 0.1, "RichFloat"), param("Seed", 1, "RichInt"),
-                                             param("DeviationMap", False, "RichBool")], True),
+    ours("Measure: Accuracy Against Reference", MeasuredMesh=1, ReferenceMesh=0, Samples=20000, Tolerance=0.1,
+         Seed=1, DeviationMap=True),
+    ours("Measure: Accuracy Against Reference", MeasuredMesh=0, ReferenceMesh=1, Samples=20000, Tolerance=0.1,
+         Seed=1),
 ]
 COLUMN = ["auto fit", "auto", "select", "merge", "split plane", "select", "split sel", "select seg", "fit", "snap", "fit all",
           "accuracy (measured)", "accuracy (reference)"]

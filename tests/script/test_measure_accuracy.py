@@ -28,14 +28,8 @@ def plate(x0, y0, x1, y1, z, n, base=0):
 
 
 def script(path, measured, reference, samples, tolerance, seed=0, deviation_map=False):
-    ms.write_mlx(path, [(FILTER, [
-        ms.param("MeasuredMesh", measured, "RichMesh"),
-        ms.param("ReferenceMesh", reference, "RichMesh"),
-        ms.param("Samples", samples, "RichInt"),
-        ms.param("Tolerance", tolerance, "RichFloat"),
-        ms.param("Seed", seed, "RichInt"),
-        ms.param("DeviationMap", deviation_map, "RichBool"),
-    ])])
+    ms.write_mlx(path, [ms.step(FILTER, MeasuredMesh=measured, ReferenceMesh=reference, Samples=samples,
+                                Tolerance=tolerance, Seed=seed, DeviationMap=deviation_map)])
 
 
 def accuracy_line(log):

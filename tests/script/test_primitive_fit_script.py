@@ -9,16 +9,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import Checker, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply
+from meshlab_script import METHODS, Checker, param, read_ply, run_meshlabserver, step, test_args, write_mlx, write_ply
 
 RADIUS, HEIGHT, SECTORS, RINGS = 4.8, 10.0, 64, 16
-TYPES = ["Auto", "Plane", "Sphere", "Cylinder", "Cone", "Torus"]
-METHODS = ["Refined starts", "Direct (paper)", "Direct, refined"]
-
-
-def type_param(index, method=0):
-    """Type and Method of Fit Segment and Snap Segment (meshlabserver needs every parameter)."""
-    return [param("Type", index, "RichEnum", TYPES), param("Method", method, "RichEnum", METHODS)]
 
 
 def noisy_closed_cylinder(seed=1, noise=0.02):
@@ -63,14 +56,8 @@ def main():
 
     script = os.path.join(args.workdir, "fit_all.mlx")
     write_mlx(script, [
-        ("Segment: Auto by Normal Angle", [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 2, "RichInt"),
-                                           param("MinSegmentFaces", 30, "RichInt")]),
-        ("Primitive: Fit All Segments", [param("Tolerance", 0, "RichFloat"), param("Relations", True, "RichBool"),
-                                     param("RelationAngle", 10, "RichFloat"), param("RelationDistance", 0, "RichFloat"),
-                                     param("RelationCost", 1, "RichFloat"),
-                                     param("Snap", True, "RichBool"),
-                                         param("Export", export, "RichString"),
-                                         param("SharpEdges", True, "RichBool")]),
+        step("Segment: Auto by Normal Angle", Angle=30, NormalSmoothing=2, MinSegmentFaces=30),
+        step("Primitive: Fit All Segments", Export=export),
     ])
     out = os.path.join(args.workdir, "snapped.ply")
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [mesh], script, out, "fq")
@@ -124,10 +111,7 @@ def main():
     cid = cyl[0]["id"] if cyl else 0
     script2 = os.path.join(args.workdir, "snap.mlx")
     write_mlx(script2, [
-        ("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), *type_param(3),
-                                     param("Radius", 5.0, "RichFloat"), param("Angle", 0, "RichFloat"),
-                                     param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
-                                     param("SharpEdges", True, "RichBool")]),
+        step("Primitive: Snap Segment", Segment=cid, Type=3, Radius=5.0),
     ])
     out2 = os.path.join(args.workdir, "radius5.ply")
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script2, out2, "fq")
@@ -149,7 +133,7 @@ def main():
     if os.path.exists(out2):
         for method in (1, 2):
             script5 = os.path.join(args.workdir, "fit_direct.mlx")
-            write_mlx(script5, [("Primitive: Fit Segment", [param("Segment", cid, "RichInt"), *type_param(3, method)])])
+            write_mlx(script5, [step("Primitive: Fit Segment", Segment=cid, Type=3, Method=method)])
             code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out2], script5, None, "")
             name = METHODS[method]  # the log names the method as the dialog does
             line = next((l for l in log.splitlines() if "Primitive: Fit Segment: segment" in l), "")
@@ -168,7 +152,7 @@ def main():
             dense = sorted(remap.values())
             expected = dense.index(remap[cid])  # the cylinder's id as the filters number it
             script3 = os.path.join(args.workdir, "fit_labelled.mlx")
-            write_mlx(script3, [("Primitive: Fit Segment", [param("Segment", expected, "RichInt"), *type_param(0)])])
+            write_mlx(script3, [step("Primitive: Fit Segment", Segment=expected)])
             out4 = os.path.join(args.workdir, "labelled_out.ply")
             code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [labelled], script3, out4, "fq")
             c.check(code == 0 and "segment %d (" % expected in log and "Cylinder" in log,
@@ -183,17 +167,14 @@ def main():
     # Bad input: the filter refuses with a clear message and the saved mesh equals the input.
     for label, filters, expect in [
         ("a segment that does not exist",
-         [("Primitive: Fit Segment", [param("Segment", 99, "RichInt"), *type_param(0)])],
+         [step("Primitive: Fit Segment", Segment=99)],
          "there is no segment 99"),
         ("too few points for a sphere",
          [("Conditional Face Selection", [param("condSelect", "fi < 1", "RichString")]),
-          ("Primitive: Fit Segment", [param("Segment", -1, "RichInt"), *type_param(2)])],
+          step("Primitive: Fit Segment", Type=2)],
          "needs at least 4"),
         ("a cone half-angle of 95 degrees",
-         [("Primitive: Snap Segment", [param("Segment", cid, "RichInt"), *type_param(4),
-                                       param("Radius", 0, "RichFloat"), param("Angle", 95, "RichFloat"),
-                                       param("MajorRadius", 0, "RichFloat"), param("MinorRadius", 0, "RichFloat"),
-                                       param("SharpEdges", True, "RichBool")])],
+         [step("Primitive: Snap Segment", Segment=cid, Type=4, Angle=95)],
          "below 90 degrees"),
     ]:
         bad = os.path.join(args.workdir, "bad.mlx")

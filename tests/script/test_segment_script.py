@@ -4,7 +4,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import Checker, box_mesh, param, read_ply, run_meshlabserver, test_args, write_mlx, write_ply
+from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, step, test_args, write_mlx,
+                            write_ply)
 
 def normal(vertices, f):
     a, b, c = (vertices[i] for i in f)
@@ -26,9 +27,7 @@ def main():
     vertices, faces = box_mesh(12)
     write_ply(box, vertices, faces)
 
-    auto = ("Segment: Auto by Normal Angle",
-            [param("Angle", 30, "RichFloat"), param("NormalSmoothing", 0, "RichInt"),
-             param("MinSegmentFaces", 0, "RichInt")])
+    auto = step("Segment: Auto by Normal Angle", Angle=30, NormalSmoothing=0, MinSegmentFaces=0)
 
     def select(expression):
         return ("Conditional Face Selection", [param("condSelect", expression, "RichString")])
@@ -37,13 +36,11 @@ def main():
     write_mlx(script, [
         auto,
         select("fq < 2"),
-        ("Segment: Merge Selected", []),
+        step("Segment: Merge Selected"),
         select("z0 > 3.99 && z1 > 3.99 && z2 > 3.99"),
-        ("Segment: Split by Plane", [param("Segment", -1, "RichInt"),
-                                     param("PlanePoint", (5, 3, 2), "RichPoint3f"),
-                                     param("PlaneNormal", (1, 0, 0), "RichPoint3f")]),
+        step("Segment: Split by Plane", PlanePoint=(5, 3, 2)),
         select("z0 < 0.01 && z1 < 0.01 && z2 < 0.01 && x0 < 2.01 && x1 < 2.01 && x2 < 2.01"),
-        ("Segment: Split by Selection", []),
+        step("Segment: Split by Selection"),
     ])
     out = os.path.join(args.workdir, "segmented.ply")
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [box], script, out, "fq")
@@ -88,7 +85,7 @@ def main():
 
     # Reopened from the PLY, the mesh has its segments back: Select Segment works on it.
     script2 = os.path.join(args.workdir, "reselect.mlx")
-    write_mlx(script2, [("Segment: Select Segment", [param("Segment", 6, "RichInt")])])
+    write_mlx(script2, [step("Segment: Select Segment", Segment=6)])
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script2)
     c.check(code == 0 and "segment 6 selected" in log, "a reopened PLY has its segments back")
 
@@ -96,9 +93,7 @@ def main():
     script4 = os.path.join(args.workdir, "graze.mlx")
     write_mlx(script4, [
         select("z0 > 3.99 && z1 > 3.99 && z2 > 3.99 && x0 < 4.99 && x1 < 4.99 && x2 < 4.99"),
-        ("Segment: Split by Plane", [param("Segment", -1, "RichInt"),
-                                     param("PlanePoint", (0.35, 0.35, 4), "RichPoint3f"),
-                                     param("PlaneNormal", (1, 1, 0), "RichPoint3f")]),
+        step("Segment: Split by Plane", PlanePoint=(0.35, 0.35, 4), PlaneNormal=(1, 1, 0)),
     ])
     out4 = os.path.join(args.workdir, "grazed.ply")
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script4, out4, "fq")
@@ -107,7 +102,7 @@ def main():
 
     # A bad segment id: the filter fails and says why in the log.
     script3 = os.path.join(args.workdir, "bad.mlx")
-    write_mlx(script3, [("Segment: Select Segment", [param("Segment", 99, "RichInt")])])
+    write_mlx(script3, [step("Segment: Select Segment", Segment=99)])
     out3 = os.path.join(args.workdir, "bad.ply")
     code, log, console = run_meshlabserver(args.meshlabserver, args.workdir, [out], script3, out3)
     c.check("there is no segment 99" in log + console, "a bad id is refused with a clear message")

@@ -5,7 +5,8 @@
 //
 //   meshlab_runner -i in.ply [-i more.ply] [-s script.mlx] [-f "Filter Name" [-a Name=Value]...]
 //                  [-o out.ply [-m fq vc ...]] [-l log.txt] [-p plugin_dir]
-//   meshlab_runner --list [-i in.ply]       every filter's name, PyMeshLab name (and parameters)
+//   meshlab_runner --list [-i in.ply]       every filter's name, PyMeshLab name (and, with a mesh, each
+//                                           parameter's name, type and default as a script's <Param>)
 //   meshlab_runner -d filters.txt           meshlabserver's filter dump ("\section fN NAME" lines)
 //
 // Scripts are meshlabserver's .mlx: each <Param name=... value=.../> sets the parameter of that name; the
@@ -267,8 +268,14 @@ void list_filters(PluginManager& pm, MeshDocument& md)
       if (md.mm() == nullptr)
         continue;
       try {
-        for (const RichParameter& r : p->initParameterList(a, md))
-          std::printf("    %s (%s)\n", qUtf8Printable(r.name()), qUtf8Printable(r.stringType()));
+        for (const RichParameter& r : p->initParameterList(a, md)) {
+          QDomDocument doc;
+          QString xml;
+          QTextStream text(&xml);
+          r.fillToXMLDocument(doc, false).save(text, -1);
+          std::printf("    %s (%s) %s\n", qUtf8Printable(r.name()), qUtf8Printable(r.stringType()),
+                      qUtf8Printable(xml.trimmed()));
+        }
       } catch (const std::exception&) {
         std::printf("    (its parameters need mesh components this mesh lacks)\n");
       }
