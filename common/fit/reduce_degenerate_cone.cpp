@@ -1,6 +1,9 @@
 #include "common/fit/reduce_degenerate_cone.h"
 
+#include "common/fit/fit_plane.h"
 #include "common/fit/refine_primitive.h"
+#include "common/geometry/closest_point_on_primitive.h"
+#include "common/geometry/weighted_pca.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,9 +31,32 @@ bool cone_is_cylinder_within(const Primitive& cone, const Eigen::MatrixX3d& poin
          !(axial_extent(points, weights, cone.axis) * std::tan(cone.half_angle) > tolerance);
 }
 
+bool cone_is_plane_within(const Primitive& cone, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
+                          double tolerance)
+{
+  if (cone.type != PrimitiveType::Cone || !primitive_is_valid(cone) || points.rows() < 3)
+    return false;
+  Eigen::MatrixX3d on_cone(points.rows(), 3);
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    on_cone.row(i) = project_onto_primitive(cone, points.row(i).transpose()).point.transpose();
+  const WeightedPca pca = weighted_pca(on_cone, weights);
+  if (!pca.ok)
+    return false;
+  const Eigen::Vector3d normal = pca.axes.col(0);
+  double farthest = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (!weights.size() || weights[i] > 0)
+      farthest = std::max(farthest, std::abs((on_cone.row(i).transpose() - pca.centroid).dot(normal)));
+  return farthest <= tolerance;
+}
+
 FitResult reduce_degenerate_cone(const FitResult& fit, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
                                  double tolerance, const FitOptions& options)
 {
+  if (fit.status.ok() && cone_is_plane_within(fit.primitive, points, weights, tolerance)) {
+    FitResult plane = fit_plane(points, Eigen::MatrixX3d(), weights, options);
+    return plane.status.ok() ? plane : fit;
+  }
   if (!fit.status.ok() || !cone_is_cylinder_within(fit.primitive, points, weights, tolerance))
     return fit;
   const Primitive& cone = fit.primitive;

@@ -240,6 +240,38 @@ TEST(ReduceDegenerateCone, ConeThatDoesNotTaperIsItsCylinder)
   EXPECT_EQ(reduce_degenerate_cone(cone_fit, t.points, weights, 0.05, options).primitive.type, PrimitiveType::Cone);
 }
 
+// A wide cone over an annulus (half angle 85 degrees, the points 0.5 to 1 from the apex along the axis: radii 5.7
+// to 11.4) stands 0.25 off its best plane at most: within a tolerance of 0.3 it is that plane, refitted on the
+// same points, within 0.2 it stays a cone. A countersink (45 degrees) is no plane at any tolerance near its size.
+TEST(ReduceDegenerateCone, ConeThatDoesNotBendIsAPlane)
+{
+  Patch annulus;
+  annulus.near = 0.5;
+  annulus.far = 1.0;
+  FitResult wide;
+  wide.primitive = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(85));
+  const Sample s = sample_primitive(wide.primitive, annulus, 600, 21);
+  const Eigen::VectorXd weights;
+  EXPECT_TRUE(cone_is_plane_within(wide.primitive, s.points, weights, 0.3));
+  EXPECT_FALSE(cone_is_plane_within(wide.primitive, s.points, weights, 0.2));
+  FitOptions options;
+  const FitResult plane = reduce_degenerate_cone(wide, s.points, weights, 0.3, options);
+  ASSERT_TRUE(plane.status.ok());
+  ASSERT_EQ(plane.primitive.type, PrimitiveType::Plane);
+  EXPECT_GT(std::abs(plane.primitive.axis.z()), std::cos(radians_from_degrees(0.5)));
+  EXPECT_NEAR(plane.primitive.origin.dot(plane.primitive.axis) * plane.primitive.axis.z(), 0.75, 0.05);
+  EXPECT_EQ(reduce_degenerate_cone(wide, s.points, weights, 0.2, options).primitive.type, PrimitiveType::Cone);
+
+  Patch countersink;
+  countersink.near = 3;
+  countersink.far = 6;
+  FitResult sink;
+  sink.primitive = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(45));
+  const Sample t = sample_primitive(sink.primitive, countersink, 600, 22);
+  EXPECT_FALSE(cone_is_plane_within(sink.primitive, t.points, weights, 0.5));
+  EXPECT_EQ(reduce_degenerate_cone(sink, t.points, weights, 0.5, options).primitive.type, PrimitiveType::Cone);
+}
+
 // The depth of an arc over its chord, by which the type choice and the merge call a sphere or cylinder flat: the
 // 3-4-5 triangle's, none over no chord, and the radius itself once the chord spans the diameter or more.
 TEST(Sagitta, ArcOverItsChord)
