@@ -245,31 +245,31 @@ TEST(ReduceDegenerateCone, ConeThatDoesNotTaperIsItsCylinder)
 // same points, within 0.2 it stays a cone. A countersink (45 degrees) is no plane at any tolerance near its size.
 TEST(ReduceDegenerateCone, ConeThatDoesNotBendIsAPlane)
 {
-  Patch annulus;
-  annulus.near = 0.5;
-  annulus.far = 1.0;
-  FitResult wide;
-  wide.primitive = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(85));
-  const Sample s = sample_primitive(wide.primitive, annulus, 600, 21);
+  // A cone about z with its apex at the origin, as a fit, and 600 points of it from near to far along the axis.
+  auto cone_points = [](double half_angle_deg, double near, double far, unsigned seed, FitResult& cone) {
+    Patch frustum;
+    frustum.near = near;
+    frustum.far = far;
+    cone.primitive = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(half_angle_deg));
+    return sample_primitive(cone.primitive, frustum, 600, seed).points;
+  };
   const Eigen::VectorXd weights;
-  EXPECT_TRUE(cone_is_plane_within(wide.primitive, s.points, weights, 0.3));
-  EXPECT_FALSE(cone_is_plane_within(wide.primitive, s.points, weights, 0.2));
   FitOptions options;
-  const FitResult plane = reduce_degenerate_cone(wide, s.points, weights, 0.3, options);
+  FitResult wide;
+  const Eigen::MatrixX3d annulus = cone_points(85, 0.5, 1.0, 21, wide);
+  EXPECT_TRUE(cone_is_plane_within(wide.primitive, annulus, weights, 0.3));
+  EXPECT_FALSE(cone_is_plane_within(wide.primitive, annulus, weights, 0.2));
+  const FitResult plane = reduce_degenerate_cone(wide, annulus, weights, 0.3, options);
   ASSERT_TRUE(plane.status.ok());
   ASSERT_EQ(plane.primitive.type, PrimitiveType::Plane);
   EXPECT_GT(std::abs(plane.primitive.axis.z()), std::cos(radians_from_degrees(0.5)));
   EXPECT_NEAR(plane.primitive.origin.dot(plane.primitive.axis) * plane.primitive.axis.z(), 0.75, 0.05);
-  EXPECT_EQ(reduce_degenerate_cone(wide, s.points, weights, 0.2, options).primitive.type, PrimitiveType::Cone);
+  EXPECT_EQ(reduce_degenerate_cone(wide, annulus, weights, 0.2, options).primitive.type, PrimitiveType::Cone);
 
-  Patch countersink;
-  countersink.near = 3;
-  countersink.far = 6;
   FitResult sink;
-  sink.primitive = make_cone({0, 0, 0}, {0, 0, 1}, radians_from_degrees(45));
-  const Sample t = sample_primitive(sink.primitive, countersink, 600, 22);
-  EXPECT_FALSE(cone_is_plane_within(sink.primitive, t.points, weights, 0.5));
-  EXPECT_EQ(reduce_degenerate_cone(sink, t.points, weights, 0.5, options).primitive.type, PrimitiveType::Cone);
+  const Eigen::MatrixX3d countersink = cone_points(45, 3, 6, 22, sink);
+  EXPECT_FALSE(cone_is_plane_within(sink.primitive, countersink, weights, 0.5));
+  EXPECT_EQ(reduce_degenerate_cone(sink, countersink, weights, 0.5, options).primitive.type, PrimitiveType::Cone);
 }
 
 // The depth of an arc over its chord, by which the type choice and the merge call a sphere or cylinder flat: the
