@@ -43,11 +43,12 @@ bool cone_is_plane_within(const Primitive& cone, const Eigen::MatrixX3d& points,
   if (!pca.ok)
     return false;
   const Eigen::Vector3d normal = pca.axes.col(0);
-  double farthest = 0;
   for (Eigen::Index i = 0; i < points.rows(); ++i)
-    if (!weights.size() || weights[i] > 0)
-      farthest = std::max(farthest, std::abs((on_cone.row(i).transpose() - pca.centroid).dot(normal)));
-  return farthest <= tolerance;
+    // Not "> tolerance": a point that is not a number makes no plane.
+    if ((!weights.size() || weights[i] > 0) &&
+        !(std::abs((on_cone.row(i).transpose() - pca.centroid).dot(normal)) <= tolerance))
+      return false;
+  return true;
 }
 
 FitResult reduce_degenerate_cone(const FitResult& fit, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,

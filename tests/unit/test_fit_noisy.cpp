@@ -265,6 +265,9 @@ TEST(ReduceDegenerateCone, ConeThatDoesNotBendIsAPlane)
   EXPECT_GT(std::abs(plane.primitive.axis.z()), std::cos(radians_from_degrees(0.5)));
   EXPECT_NEAR(plane.primitive.origin.dot(plane.primitive.axis) * plane.primitive.axis.z(), 0.75, 0.05);
   EXPECT_EQ(reduce_degenerate_cone(wide, annulus, weights, 0.2, options).primitive.type, PrimitiveType::Cone);
+  Eigen::MatrixX3d broken = annulus;
+  broken(7, 1) = std::nan("");
+  EXPECT_FALSE(cone_is_plane_within(wide.primitive, broken, weights, 0.3));
 
   FitResult sink;
   const Eigen::MatrixX3d countersink = cone_points(45, 3, 6, 22, sink);
