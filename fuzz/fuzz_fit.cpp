@@ -117,13 +117,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   check_fit(segment);
   FUZZ_CHECK(!segment.status.ok() || (segment.primitive.type == type && primitive_is_valid(segment.primitive)));
 
-  // A refined cone that no longer tapers within a tolerance becomes its cylinder (the segmentation's refits); any
-  // other fit stays as it is.
-  const FitResult reduced = reduce_degenerate_cone(refined, points, weights, in.special(0.1), options);
+  // A refined cone that no longer bends within a tolerance becomes its plane, one that no longer tapers its
+  // cylinder (the segmentation's refits); any other fit stays as it is.
+  const double tolerance = in.special(0.1);
+  const FitResult reduced = reduce_degenerate_cone(refined, points, weights, tolerance, options);
   check_fit(reduced);
-  const bool to_cylinder = refined.status.ok() && refined.primitive.type == PrimitiveType::Cone &&
-                           reduced.primitive.type == PrimitiveType::Cylinder;
-  FUZZ_CHECK(to_cylinder ? reduced.status.ok() && primitive_is_valid(reduced.primitive)
-                         : reduced.primitive.type == refined.primitive.type);
+  const bool cone = refined.status.ok() && refined.primitive.type == PrimitiveType::Cone;
+  const bool reduced_to = cone && reduced.primitive.type != PrimitiveType::Cone;
+  FUZZ_CHECK(reduced_to ? reduced.status.ok() && primitive_is_valid(reduced.primitive)
+                        : reduced.primitive.type == refined.primitive.type);
+  if (reduced_to && reduced.primitive.type == PrimitiveType::Plane)
+    FUZZ_CHECK(cone_is_plane_within(refined.primitive, points, weights, tolerance));
+  else if (reduced_to)
+    FUZZ_CHECK(reduced.primitive.type == PrimitiveType::Cylinder &&
+               cone_is_cylinder_within(refined.primitive, points, weights, tolerance));
   return 0;
 }
