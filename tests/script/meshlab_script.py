@@ -218,6 +218,11 @@ def step(name, **values):
     return name, lines
 
 
+def select_faces(expression):
+    """MeshLab's Conditional Face Selection of the faces where `expression` holds (e.g. "fq < 2")."""
+    return "Conditional Face Selection", [param("condSelect", expression, "RichString")]
+
+
 def write_mlx(path, filters):
     """filters: list of (filter name, [param(...) strings])."""
     with open(path, "w") as out:

@@ -25,8 +25,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_malformed_meshes import make_all  # noqa: E402
-from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, step, test_args,  # noqa: E402
-                            write_mlx, write_ply)
+from meshlab_script import (Checker, box_mesh, read_ply, run_meshlabserver, select_faces, step,  # noqa: E402
+                            test_args, write_mlx, write_ply)
 
 
 def ours(name, **values):
@@ -34,7 +34,7 @@ def ours(name, **values):
 
 
 def selection(expression):
-    return ("Conditional Face Selection", [param("condSelect", expression, "RichString")], False)
+    return select_faces(expression) + (False,)
 
 
 # (name, params, ours): every parameter listed by name, as meshlabserver 2020.09 requires.

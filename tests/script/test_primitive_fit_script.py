@@ -9,7 +9,8 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import METHODS, Checker, param, read_ply, run_meshlabserver, step, test_args, write_mlx, write_ply
+from meshlab_script import (METHODS, Checker, read_ply, run_meshlabserver, select_faces, step, test_args, write_mlx,
+                            write_ply)
 
 RADIUS, HEIGHT, SECTORS, RINGS = 4.8, 10.0, 64, 16
 
@@ -170,7 +171,7 @@ def main():
          [step("Primitive: Fit Segment", Segment=99)],
          "there is no segment 99"),
         ("too few points for a sphere",
-         [("Conditional Face Selection", [param("condSelect", "fi < 1", "RichString")]),
+         [select_faces("fi < 1"),
           step("Primitive: Fit Segment", Type=2)],
          "needs at least 4"),
         ("a cone half-angle of 95 degrees",

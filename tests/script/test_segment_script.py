@@ -4,8 +4,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from meshlab_script import (Checker, box_mesh, param, read_ply, run_meshlabserver, step, test_args, write_mlx,
-                            write_ply)
+from meshlab_script import (Checker, box_mesh, read_ply, run_meshlabserver, select_faces, step, test_args,
+                            write_mlx, write_ply)
 
 def normal(vertices, f):
     a, b, c = (vertices[i] for i in f)
@@ -29,17 +29,14 @@ def main():
 
     auto = step("Segment: Auto by Normal Angle", Angle=30, NormalSmoothing=0, MinSegmentFaces=0)
 
-    def select(expression):
-        return ("Conditional Face Selection", [param("condSelect", expression, "RichString")])
-
     script = os.path.join(args.workdir, "segment.mlx")
     write_mlx(script, [
         auto,
-        select("fq < 2"),
+        select_faces("fq < 2"),
         step("Segment: Merge Selected"),
-        select("z0 > 3.99 && z1 > 3.99 && z2 > 3.99"),
+        select_faces("z0 > 3.99 && z1 > 3.99 && z2 > 3.99"),
         step("Segment: Split by Plane", PlanePoint=(5, 3, 2)),
-        select("z0 < 0.01 && z1 < 0.01 && z2 < 0.01 && x0 < 2.01 && x1 < 2.01 && x2 < 2.01"),
+        select_faces("z0 < 0.01 && z1 < 0.01 && z2 < 0.01 && x0 < 2.01 && x1 < 2.01 && x2 < 2.01"),
         step("Segment: Split by Selection"),
     ])
     out = os.path.join(args.workdir, "segmented.ply")
@@ -92,7 +89,7 @@ def main():
     # A plane that grazes the top's corner would cut off one face: a sliver is no segment, it stays in its own.
     script4 = os.path.join(args.workdir, "graze.mlx")
     write_mlx(script4, [
-        select("z0 > 3.99 && z1 > 3.99 && z2 > 3.99 && x0 < 4.99 && x1 < 4.99 && x2 < 4.99"),
+        select_faces("z0 > 3.99 && z1 > 3.99 && z2 > 3.99 && x0 < 4.99 && x1 < 4.99 && x2 < 4.99"),
         step("Segment: Split by Plane", PlanePoint=(0.35, 0.35, 4), PlaneNormal=(1, 1, 0)),
     ])
     out4 = os.path.join(args.workdir, "grazed.ply")
