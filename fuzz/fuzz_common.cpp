@@ -41,6 +41,7 @@
 #include "common/pipeline/write_fits_json.h"
 #include "common/snap/snap_segments.h"
 #include "common/segment/split_segments_by_plane.h"
+#include "fuzz/check_growing_report.h"
 #include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
 #include "fuzz/snap_checked.h"
@@ -185,14 +186,7 @@ void check_primitive_growing(Decoder& in, MeshType& m, const FaceAdjacency& adj)
     SegmentByPrimitiveGrowingReport report;
     const int G = segment_by_primitive_growing(m, adj, grow, grown, &report);
     check_segmentation(m, grown, G);
-    FUZZ_CHECK(report.primitive_of_segment.size() == size_t(G));
-    FUZZ_CHECK(std::isfinite(report.roughness) && report.roughness >= 0 && report.tolerance >= 0);
-    // A carved blend is a segment with a valid primitive between two other segments.
-    for (const SegmentBlendRecord& b : report.blends)
-      FUZZ_CHECK(b.segment >= 0 && b.segment < G && b.plane_a >= 0 && b.plane_a < G && b.plane_b >= 0 &&
-                 b.plane_b < G && b.segment != b.plane_a && b.segment != b.plane_b && b.plane_a != b.plane_b &&
-                 report.primitive_of_segment[size_t(b.segment)] &&
-                 primitive_is_valid(*report.primitive_of_segment[size_t(b.segment)]));
+    check_growing_report(report, G);
     FUZZ_CHECK(segment_by_primitive_growing(m, adj, grow, again) == G && again == grown);
     const double kept = surface_roughness(m, adj);
     FUZZ_CHECK(std::isfinite(kept) && kept >= 0 && read_surface_roughness(m) == kept);

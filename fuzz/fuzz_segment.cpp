@@ -12,6 +12,7 @@
 #include "common/segment/describe_carved_blends.h"
 #include "common/segment/segment_by_normal_angle.h"
 #include "common/segment/segment_by_primitive_growing.h"
+#include "fuzz/check_growing_report.h"
 #include "fuzz/decoded_mesh_type.h"
 #include "fuzz/fuzz_input.h"
 
@@ -53,14 +54,7 @@ void run(Decoder& in)
   if (check_primitive_growing_params(grow).ok()) {
     const int G = segment_by_primitive_growing(m, adj, grow, grown, &report);
     check_segmentation(m, grown, G);
-    FUZZ_CHECK(report.primitive_of_segment.size() == size_t(G));
-    FUZZ_CHECK(std::isfinite(report.roughness) && report.roughness >= 0 && report.tolerance >= 0);
-    // A carved blend is a segment with a valid primitive between two other segments.
-    for (const SegmentBlendRecord& b : report.blends)
-      FUZZ_CHECK(b.segment >= 0 && b.segment < G && b.plane_a >= 0 && b.plane_a < G && b.plane_b >= 0 &&
-                 b.plane_b < G && b.segment != b.plane_a && b.segment != b.plane_b && b.plane_a != b.plane_b &&
-                 report.primitive_of_segment[size_t(b.segment)] &&
-                 primitive_is_valid(*report.primitive_of_segment[size_t(b.segment)]));
+    check_growing_report(report, G);
     // The log's line names every one of them (describe_carved_blends.h), and is empty without them.
     const std::string carved = describe_carved_blends(report.blends);
     FUZZ_CHECK(carved.empty() == report.blends.empty());
