@@ -5,10 +5,10 @@ figures move when nothing physical changes.
 The segmentation is greedy (seeds in order of flatness, regions grown and merged at thresholds), so a decision
 that lies near a threshold can go either way under a perturbation far below the scan's noise, and with it a
 few segments. Copy 0 is the scan itself; copy k moves every vertex coordinate by a uniform random amount in
-[-A, A] (seed k). Per copy: `bench_segment_parts --runs 1 --threads 1` segments it (segments, and with --truth
-the share of the area labelled right), `bench_segment_scan --runs 1 --threads 1` segments it the same way and
-fits and snaps the segments as Fit All does after it (with the blends the segmentation found), and
-`measure_scan` measures the snapped copy against the reference (share within 0.42 mm, mean).
+[-A, A] (seed k). Per copy: with --truth, `bench_segment_parts --runs 1 --threads 1` segments it and scores the
+share of the area labelled right; `bench_segment_scan --runs 1 --threads 1` segments it (the same way; the
+segment count is read from it) and fits and snaps the segments as Fit All does after it (with the blends the
+segmentation found), and `measure_scan` measures the snapped copy against the reference (share within 0.42 mm, mean).
 Printed per copy, then the median, lowest and highest of each figure over the copies. With --keep DIR each copy's
 segmentation and snapped scan stay in DIR as copyK.segmented.ply and copyK.snapped.ply, to look at a copy that
 scores apart.
@@ -89,14 +89,18 @@ def one_copy(args, scan, work, k):
     for path in (snapped, segmented):  # so that a step that writes nothing cannot pass on an earlier run's file
         if os.path.exists(path):
             os.remove(path)
-    cmd = [os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1"]
-    text = run(cmd + ["--truth", args.truth] if args.truth else cmd)
-    segments = number(r"segments (\d+)\n", text, "segment count")
-    labelled = number(r"labelled ([\d.]+)%", text, "labelled share") if args.truth else None
+    segments = labelled = None
+    if args.truth:  # bench_segment_parts scores only against a truth
+        text = run([os.path.join(bench, "bench_segment_parts"), scan, "--runs", "1", "--threads", "1", "--truth",
+                    args.truth])
+        segments = number(r"segments (\d+)\n", text, "segment count")
+        labelled = number(r"labelled ([\d.]+)%", text, "labelled share")
     # Segmented again in the same process as Fit All (the same segmentation: it is deterministic), as the filters
     # run in one MeshLab: Fit All gets the segmentation's blends from the mesh (segment_blends_attribute.h).
-    run([os.path.join(bench, "bench_segment_scan"), scan, "--runs", "1", "--threads", "1", "--snapped", snapped] +
-        (["--segmented", segmented] if args.keep else []))
+    text = run([os.path.join(bench, "bench_segment_scan"), scan, "--runs", "1", "--threads", "1", "--snapped",
+                snapped] + (["--segmented", segmented] if args.keep else []))
+    if segments is None:
+        segments = number(r"faces, (\d+) segments", text, "segment count")
     text = run([os.path.join(bench, "bracket", "measure_scan"), snapped, args.reference])
     within = number(r"([\d.]+)% within", text, "accuracy")
     mean = number(r"mean ([\d.]+) mm", text, "mean distance")
