@@ -89,6 +89,17 @@ void make_grid_cube(M& m, int n)
   vcg::tri::Allocator<M>::CompactEveryVector(m);
 }
 
+// make_grid_cube with each vertex moved by Gaussian noise of std sigma in each coordinate.
+template <class M>
+void make_noisy_grid_cube(M& m, int n, double sigma, unsigned seed)
+{
+  make_grid_cube(m, n);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  for (auto& v : m.vert)
+    v.P() += coord<M>(noise(rng), noise(rng), noise(rng));
+}
+
 // The checks every operation must pass: one entry per face, -1 exactly on deleted faces, ids dense 0..K-1.
 template <class M>
 void expect_valid_segmentation(const M& m, const std::vector<int>& seg, int K)
@@ -335,11 +346,7 @@ TYPED_TEST(SegmentationTest, SmallerAngleGivesAtLeastAsManySegments)
 TYPED_TEST(SegmentationTest, SmoothingGivesUnitNormalsAndReducesNoise)
 {
   TypeParam m;
-  make_grid_cube(m, 30);
-  std::mt19937 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.004);
-  for (auto& v : m.vert)
-    v.P() += coord<TypeParam>(noise(rng), noise(rng), noise(rng));
+  make_noisy_grid_cube(m, 30, 0.004, 3);
   const FaceAdjacency adj = build_face_adjacency(m);
   // Mean angle between each face normal and its side's exact normal (the dominant axis of its centroid).
   auto mean_error = [&](const std::vector<Eigen::Vector3d>& normal) {
@@ -360,6 +367,33 @@ TYPED_TEST(SegmentationTest, SmoothingGivesUnitNormalsAndReducesNoise)
   const double smoothed = mean_error(smooth_face_normals(m, adj, 3, 40.0));
   EXPECT_GT(raw, 0.05);
   EXPECT_LT(smoothed, 0.6 * raw);
+}
+
+TYPED_TEST(SegmentationTest, UngatedSmoothingIsThePlainAreaWeightedAverage)
+{
+  // The ungated passes keep area-weighted normals between passes; the normals must be the bits of the plain
+  // average of each face's and its neighbours' area-weighted normals, pass after pass, threads or not.
+  TypeParam m;
+  make_noisy_grid_cube(m, 20, 0.01, 5);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  std::vector<Eigen::Vector3d> expected;
+  const std::vector<double> area = face_centroids_and_areas(m, 1, &expected).area;
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<Eigen::Vector3d> next(expected.size());
+    for (std::size_t f = 0; f < expected.size(); ++f) {
+      Eigen::Vector3d sum = area[f] * expected[f];
+      for (int i = adj.offset[f]; i < adj.offset[f + 1]; ++i)
+        sum += area[std::size_t(adj.neighbour[std::size_t(i)])] * expected[std::size_t(adj.neighbour[std::size_t(i)])];
+      next[f] = sum / sum.norm();
+    }
+    expected.swap(next);
+  }
+  for (int threads : {1, 2}) {
+    const std::vector<Eigen::Vector3d> got = smooth_face_normals(m, adj, 4, 180.0, threads);
+    ASSERT_EQ(got.size(), expected.size());
+    for (std::size_t f = 0; f < got.size(); ++f)
+      ASSERT_EQ(got[f], expected[f]) << "face " << f << ", " << threads << " thread(s)";
+  }
 }
 
 TYPED_TEST(SegmentationTest, MergeJoinsListedSegmentsOnly)
