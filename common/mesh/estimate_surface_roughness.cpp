@@ -10,46 +10,83 @@ double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& 
   if (!pca.ok)
     return -1.0;
   // Coordinates scaled by the patch's extent keep the 6 x 6 normal equations well conditioned.
-  const double scale = std::sqrt(std::max(pca.eigenvalues[2], 1e-300));
-  const Eigen::MatrixX3d local = (points.rowwise() - pca.centroid.transpose()) * pca.axes;  // (n, v, u) per row
-  Eigen::Matrix<double, Eigen::Dynamic, 6> rows(points.rows(), 6);
-  rows.col(0) = local.col(2).array().square() / (scale * scale);
-  rows.col(1) = local.col(2).array() * local.col(1).array() / (scale * scale);
-  rows.col(2) = local.col(1).array().square() / (scale * scale);
-  rows.col(3) = local.col(2) / scale;
-  rows.col(4) = local.col(1) / scale;
-  rows.col(5).setOnes();
-  const double sum_w = weights.sum();
+  const double inverse_scale = 1.0 / std::sqrt(std::max(pca.eigenvalues[2], 1e-300));
+  const Eigen::Vector3d normal = pca.axes.col(0), across = pca.axes.col(1) * inverse_scale,
+                        along = pca.axes.col(2) * inverse_scale;
+  // The normal equations of the rows (u^2, uv, v^2, u, v, 1) hold the 15 weighted moments of u^a v^b, a + b <= 4,
+  // and the right side the 6 of h u^a v^b, a + b <= 2: summed point by point, not over stored rows (a patch is
+  // thousands of points).
+  double m[5][5] = {};  // m[a][b] = sum w u^a v^b
+  double mh[3][3] = {}; // mh[a][b] = sum w h u^a v^b
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
+    const double w = weights[i], h = d.dot(normal), u = d.dot(along), v = d.dot(across);
+    const double u2 = u * u, v2 = v * v;
+    const double wu = w * u, wv = w * v, wu2 = w * u2, wv2 = w * v2, wuv = wu * v;
+    m[0][0] += w;
+    m[1][0] += wu;
+    m[0][1] += wv;
+    m[2][0] += wu2;
+    m[1][1] += wuv;
+    m[0][2] += wv2;
+    m[3][0] += wu2 * u;
+    m[2][1] += wu2 * v;
+    m[1][2] += wv2 * u;
+    m[0][3] += wv2 * v;
+    m[4][0] += wu2 * u2;
+    m[3][1] += wu2 * u * v;
+    m[2][2] += wu2 * v2;
+    m[1][3] += wv2 * u * v;
+    m[0][4] += wv2 * v2;
+    mh[0][0] += w * h;
+    mh[1][0] += wu * h;
+    mh[0][1] += wv * h;
+    mh[2][0] += wu2 * h;
+    mh[1][1] += wuv * h;
+    mh[0][2] += wv2 * h;
+  }
+  const double sum_w = m[0][0];
   if (!(sum_w > 0))
     return -1.0;
-  const Eigen::Matrix<double, 6, 6> A = rows.transpose() * weights.asDiagonal() * rows;
-  const Eigen::Matrix<double, 6, 1> rhs = rows.transpose() * weights.cwiseProduct(local.col(0));
+  static constexpr int kPowers[6][2] = {{2, 0}, {1, 1}, {0, 2}, {1, 0}, {0, 1}, {0, 0}};  // row i is u^a v^b
+  Eigen::Matrix<double, 6, 6> A;
+  Eigen::Matrix<double, 6, 1> rhs;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j)
+      A(i, j) = m[kPowers[i][0] + kPowers[j][0]][kPowers[i][1] + kPowers[j][1]];
+    rhs[i] = mh[kPowers[i][0]][kPowers[i][1]];
+  }
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * ldlt.vectorD().cwiseAbs().maxCoeff()))
     return -1.0;
-  const Eigen::VectorXd r = local.col(0) - rows * ldlt.solve(rhs);
+  const Eigen::Matrix<double, 6, 1> c = ldlt.solve(rhs);
+  // The residuals themselves, not sum w h^2 - c . rhs, which cancels on a surface the quadric fits exactly.
+  double sum_r2 = 0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
+    const double h = d.dot(normal), u = d.dot(along), v = d.dot(across);
+    const double r = h - (((c[0] * u + c[1] * v + c[3]) * u + (c[2] * v + c[4]) * v) + c[5]);
+    sum_r2 += weights[i] * r * r;
+  }
   // The fit's 6 parameters take 6 of the N degrees of freedom.
   const double n = double(points.rows());
-  return std::sqrt(weights.dot(r.cwiseAbs2()) / sum_w * n / (n - 6.0));
+  return std::sqrt(sum_r2 / sum_w * n / (n - 6.0));
 }
 
 namespace roughness_detail {
 
-void grow_patch(const FaceAdjacency& adj, const std::vector<double>& area, int seed, int mark, int patch_faces,
-                std::vector<int>& stamp, std::vector<int>& patch)
+void grow_patch(const FaceAdjacency& adj, int seed, int mark, int patch_faces, std::vector<int>& stamp,
+                std::vector<int>& patch)
 {
   patch.assign(1, seed);
   stamp[std::size_t(seed)] = mark;
   for (std::size_t head = 0; head < patch.size() && int(patch.size()) < patch_faces; ++head) {
-    prefetch_walk_ahead(adj, patch, head, 8, [&](std::size_t h) {
-      prefetch(stamp.data() + h);
-      prefetch(area.data() + h);
-    });
+    prefetch_walk_ahead(adj, patch, head, 8, [&](std::size_t h) { prefetch(stamp.data() + h); });
     const int f = patch[head];
     for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1] && int(patch.size()) < patch_faces;
          ++k) {
       const int h = adj.neighbour[std::size_t(k)];
-      if (stamp[std::size_t(h)] != mark && area[std::size_t(h)] > 0) {
+      if (stamp[std::size_t(h)] < mark) {
         stamp[std::size_t(h)] = mark;
         patch.push_back(h);
       }
@@ -113,8 +150,11 @@ SurfaceRoughness measure_surface_roughness(const std::vector<Eigen::Vector3d>& c
   std::vector<std::pair<double, double>> rms(seeds.size(), {std::nan(""), std::nan("")});
   parallel_for(seeds.size(), threads, 50, [&](std::size_t begin, std::size_t end) {
     std::vector<int> stamp = huge_page_vector(n, -1), patch; // advised: fewer faults on a first call
+    for (std::size_t f = 0; f < n; ++f)
+      if (!(area[f] > 0))
+        stamp[f] = roughness_detail::kUnusableFace;
     for (std::size_t i = begin; i < end; ++i) {
-      roughness_detail::grow_patch(adj, area, seeds[i], int(i), patch_faces, stamp, patch);
+      roughness_detail::grow_patch(adj, seeds[i], int(i), patch_faces, stamp, patch);
       if (int(patch.size()) >= std::max(3, patch_faces / 2))
         rms[i] = roughness_detail::patch_rms(centroid, area, patch);
     }

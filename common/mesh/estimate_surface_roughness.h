@@ -61,9 +61,14 @@ struct SurfaceRoughness
 
 namespace roughness_detail {
 
-// The patch of up to patch_faces usable faces grown breadth-first from a seed (stamp: per-face marks).
-void grow_patch(const FaceAdjacency& adj, const std::vector<double>& area, int seed, int mark, int patch_faces,
-                std::vector<int>& stamp, std::vector<int>& patch);
+// A face that takes no part (area <= 0) holds this stamp.
+constexpr int kUnusableFace = std::numeric_limits<int>::max();
+
+// The patch of up to patch_faces faces grown breadth-first from a seed over faces whose stamp is below `mark`,
+// stamping them `mark`. Stamps are the marks of earlier patches (a thread's marks increase) or kUnusableFace,
+// so that one load tells both whether a face is usable and whether the patch has it.
+void grow_patch(const FaceAdjacency& adj, int seed, int mark, int patch_faces, std::vector<int>& stamp,
+                std::vector<int>& patch);
 
 // The RMS about the patch's plane and about its quadric (NaN where there is none).
 std::pair<double, double> patch_rms(const std::vector<Eigen::Vector3d>& centroid,

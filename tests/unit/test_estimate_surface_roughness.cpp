@@ -154,6 +154,53 @@ TEST(EstimateSurfaceRoughness, NoisyPlaneGivesTheNoiseOfItsFaceCentroids)
   EXPECT_NEAR(roughness_of_grid(2 * sigma, 3) / r, 2.0, 0.2);
 }
 
+TEST(QuadricPatchRms, IsTheRmsOfTheLeastSquaresQuadricOverThePcaPlane)
+{
+  // The moments the fit sums must give the residuals of the dense least-squares height field, weighted, with
+  // the 6 parameters taken from the degrees of freedom.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> at(-1.5, 1.5), weight(0.2, 2.0);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  const Eigen::Index n = 500;
+  Eigen::MatrixX3d points(n, 3);
+  Eigen::VectorXd weights(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double x = at(rng), y = 0.5 * at(rng);
+    points.row(i) << 10 + x, -3 + y, 7 + 0.3 * x * x - 0.2 * x * y + 0.1 * y + noise(rng);
+    weights[i] = weight(rng);
+  }
+  const WeightedPca pca = weighted_pca(points, weights);
+  const Eigen::MatrixX3d local = (points.rowwise() - pca.centroid.transpose()) * pca.axes;
+  Eigen::MatrixXd rows(n, 6);
+  rows << local.col(2).array().square(), local.col(2).array() * local.col(1).array(), local.col(1).array().square(),
+      local.col(2), local.col(1), Eigen::VectorXd::Ones(n);
+  const Eigen::VectorXd root = weights.cwiseSqrt();
+  const Eigen::VectorXd c = (root.asDiagonal() * rows).colPivHouseholderQr().solve(root.asDiagonal() * local.col(0));
+  const Eigen::VectorXd r = local.col(0) - rows * c;
+  const double expected = std::sqrt(weights.dot(r.cwiseAbs2()) / weights.sum() * double(n) / double(n - 6));
+  EXPECT_NEAR(quadric_patch_rms(points, weights, pca), expected, 1e-9 * expected);
+  EXPECT_GT(expected, 0.015);  // the noise, not the curvature, is left
+  EXPECT_LT(expected, 0.025);
+}
+
+TEST(EstimateSurfaceRoughness, PatchesSkipUnusableFaces)
+{
+  // Faces of zero area take no part: patches grow around them, and the noise is that of the rest.
+  test_mesh::TMesh m;
+  make_noisy_grid(m, 0.05, 12);
+  const FaceAdjacency adj = build_face_adjacency(m);
+  const FaceCentroidsAndAreas faces = face_centroids_and_areas(m);
+  std::vector<double> area = faces.area;
+  for (std::size_t f = 0; f < area.size(); f += 3)
+    area[f] = 0.0;
+  const double all = estimate_surface_roughness(faces.centroid, faces.area, adj);
+  const double some = estimate_surface_roughness(faces.centroid, area, adj);
+  EXPECT_GT(some, 0.8 * all);
+  EXPECT_LT(some, 1.2 * all);
+  std::vector<double> none(area.size(), 0.0);
+  EXPECT_EQ(estimate_surface_roughness(faces.centroid, none, adj), 0.0);
+}
+
 TEST(EstimateSurfaceRoughness, BadInputGivesZero)
 {
   test_mesh::TMesh empty;
