@@ -33,7 +33,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tests", "script"))
 sys.path.insert(0, HERE)
-from meshlab_script import FILTER_PARAMETERS, param, step, write_mlx  # noqa: E402
+from meshlab_script import FILTER_PARAMETERS, param, step, virtual_display, write_mlx  # noqa: E402
 from score_segmentation import score  # noqa: E402
 
 MEASURE = "Measure: Accuracy Against Reference"
@@ -59,8 +59,9 @@ def available_filters(meshlabserver):
     """Filter names this meshlabserver knows (from its -d documentation dump)."""
     dump = os.path.join(os.environ.get("TMPDIR", "/tmp"), "run_pipeline_filters_%d.txt" % os.getpid())
     try:
-        subprocess.run(["xvfb-run", "-a", meshlabserver, "-d", dump], stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL, timeout=300)
+        with virtual_display() as env:
+            subprocess.run([meshlabserver, "-d", dump], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                           timeout=300, env=env)
         text = open(dump, errors="replace").read() if os.path.exists(dump) else ""
     finally:
         if os.path.exists(dump):
@@ -104,16 +105,17 @@ def segmentation_step(name, overrides, available):
 
 
 def run_timed(meshlabserver, inputs, script, output, mask="fq"):
-    """Runs meshlabserver under xvfb-run with line-buffered output. Returns (exit code, [(seconds since
-    start, line)]): the plugins' log lines ("LOG: level text", printed as they are logged) and
+    """Runs meshlabserver on a virtual display of its own with line-buffered output. Returns (exit code,
+    [(seconds since start, line)]): the plugins' log lines ("LOG: level text", printed as they are logged) and
     meshlabserver's own ("filter: NAME" as each filter starts)."""
-    cmd = ["xvfb-run", "-a", "stdbuf", "-oL", meshlabserver]
+    cmd = ["stdbuf", "-oL", meshlabserver]
     for i in inputs:
         cmd += ["-i", i]
     cmd += ["-s", script, "-o", output, "-m"] + mask.split()
     t0 = time.monotonic()
     lines = []
-    with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT) as proc:
+    with virtual_display() as env, subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                                    env=env) as proc:
         for raw in proc.stdout:
             lines.append((time.monotonic() - t0, raw.decode(errors="replace").rstrip("\n")))
         code = proc.wait()
@@ -281,7 +283,7 @@ def main():
     if not (os.path.isfile(args.meshlabserver) and os.access(args.meshlabserver, os.X_OK)):
         raise SystemExit("run_pipeline: no meshlabserver at %s (build the project, or give --meshlabserver)"
                          % args.meshlabserver)
-    for tool in ("xvfb-run", "stdbuf"):
+    for tool in ("Xvfb", "stdbuf"):
         if shutil.which(tool) is None:
             raise SystemExit("run_pipeline: %s not found (Debian: xvfb, coreutils)" % tool)
     if args.samples < 1 or not args.tolerance > 0:

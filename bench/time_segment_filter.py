@@ -24,22 +24,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tests", "script"))
 sys.path.insert(0, HERE)
-from meshlab_script import step, write_mlx  # noqa: E402
+from meshlab_script import step, virtual_display, write_mlx  # noqa: E402
 from run_pipeline import SEGMENT_MS, SEGMENTATIONS  # noqa: E402
-
-
-def start_display():
-    """An Xvfb on a free display number; returns (process, ':N')."""
-    read_end, write_end = os.pipe()
-    proc = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
-                            pass_fds=(write_end,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    with os.fdopen(read_end) as f:
-        number = f.readline().strip()
-    if not number:
-        proc.kill()
-        raise SystemExit("time_segment_filter: Xvfb did not start")
-    return proc, ":" + number
 
 
 def run(meshlabserver, cpus, mesh, out, script, env):
@@ -76,9 +62,7 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         script = os.path.join(work, "segment.mlx")
         write_mlx(script, [step(args.filter)])
-        xvfb, display = start_display()
-        env = dict(os.environ, DISPLAY=display)
-        try:
+        with virtual_display() as env:
             print("%s, %s at its defaults, %d round(s); seconds, medians" % (args.mesh, args.filter, args.runs))
             for cpus in args.cpus:
                 plain, segmented, logged = [], [], []
@@ -91,10 +75,6 @@ def main():
                 print("CPUs %-5s load+save %.3f  load+segment+save %.3f  difference %.3f  filter's log %.3f" % (
                     cpus, statistics.median(plain), statistics.median(segmented), difference,
                     statistics.median(logged)))
-        finally:
-            xvfb.terminate()
-            xvfb.wait()
-
 
 if __name__ == "__main__":
     main()

@@ -4,10 +4,13 @@ the current mesh through MeshLab's own Export dialog. Also the checks' tally and
 the mesh is, where the tool's panel ends)."""
 import contextlib
 import os
-import select
 import shutil
 import subprocess
+import sys
 import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "script"))
+from meshlab_script import start_virtual_display  # noqa: E402
 
 passed = 0
 failed = 0
@@ -57,26 +60,10 @@ class Session:
         self.shot_index = 0
 
     def start(self, mesh):
-        # Xvfb picks a free display itself and writes its number when it is ready (-displayfd): GUI tests started
-        # side by side by ctest -j once both saw :91 free and started two servers on it, one of which had not yet
-        # given up a second later, so both tests took :91.
-        read_end, write_end = os.pipe()
-        self.xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x1024x24",
-                                      "-nolisten", "tcp"], pass_fds=(write_end,),
-                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        os.close(write_end)
-        number = b""
-        deadline = time.time() + 60
-        while not number.endswith(b"\n") and time.time() < deadline and self.xvfb.poll() is None:
-            if select.select([read_end], [], [], 1.0)[0]:
-                chunk = os.read(read_end, 16)
-                if not chunk:
-                    break
-                number += chunk
-        os.close(read_end)
-        if not number.strip().isdigit():
-            raise RuntimeError("could not start Xvfb")
-        self.display = ":" + number.strip().decode()
+        # Xvfb picks a free display itself (start_virtual_display): GUI tests started side by side by ctest -j
+        # once both saw :91 free and started two servers on it, one of which had not yet given up a second later,
+        # so both tests took :91.
+        self.xvfb, self.display = start_virtual_display("1280x1024x24")
         self.env["DISPLAY"] = self.display
         self.env.pop("WAYLAND_DISPLAY", None)
         # A home of the test's own: no settings of earlier runs, and MeshLab 2025.07's first-start question

@@ -12,7 +12,7 @@ automatic segmentation: N segments" must give the batch's count and list the fil
 batch's log does. Screenshots of every step are kept in the work directory.
 
 Usage: python3 test_edit_primitive_scan.py --meshlab PATH --batch PATH --workdir DIR
-(--batch: meshlabserver or meshlab_runner.) Needs Xvfb, xvfb-run, xdotool and ImageMagick's import.
+(--batch: meshlabserver or meshlab_runner.) Needs Xvfb, xdotool and ImageMagick's import.
 Prints "N passed, N failed"; exits non-zero on failure.
 """
 import argparse

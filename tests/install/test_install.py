@@ -11,7 +11,11 @@ import argparse
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "script"))
+from meshlab_script import virtual_display  # noqa: E402
 
 OURS = ["libfilter_segment.so", "libfilter_primitive_fit.so", "libfilter_measure_accuracy.so"]
 
@@ -57,13 +61,13 @@ def main():
             stock = os.path.join(os.path.dirname(a.meshlab), "plugins")
             check(not any(os.path.exists(os.path.join(stock, lib)) for lib in ours),
                   "the stock MeshLab's own plugins folder has none of ours")
-            env = dict(os.environ, HOME=home, QT_DEBUG_PLUGINS="1")
-            auth = os.path.join(work, "xauth")
-            try:
-                out = subprocess.run(["xvfb-run", "-a", "-f", auth, "timeout", "-s", "TERM", "20", a.meshlab],
-                                     env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120).stdout
-            except subprocess.TimeoutExpired as e:
-                out = e.stdout or b""
+            with virtual_display() as env:
+                env.update(HOME=home, QT_DEBUG_PLUGINS="1")
+                try:
+                    out = subprocess.run(["timeout", "-s", "TERM", "20", a.meshlab], env=env, stdout=subprocess.PIPE,
+                                         stderr=subprocess.STDOUT, timeout=120).stdout
+                except subprocess.TimeoutExpired as e:
+                    out = e.stdout or b""
             text = out.decode(errors="replace")
             for lib in ours:
                 check(('loaded library "%s"' % os.path.join(user_dir, lib)) in text,

@@ -1,13 +1,16 @@
-"""Helpers for the meshlabserver script tests: PLY reading/writing, .mlx writing, running meshlabserver, a
-welded box to run the filters on.
+"""Helpers for the meshlabserver script tests: PLY reading/writing, .mlx writing, a virtual display, running
+meshlabserver, a welded box to run the filters on.
 
 Standard library only. meshlabserver 2020.09 asserts unless a script lists every parameter of a filter,
 so scripts are written from complete parameter lists: step() writes them from FILTER_PARAMETERS.
 """
 import argparse
+import contextlib
 import os
+import select
 import struct
 import subprocess
+import time
 import xml.sax.saxutils as saxutils
 
 PLY_TYPES = {
@@ -235,15 +238,60 @@ def write_mlx(path, filters):
         out.write("</FilterScript>\n")
 
 
+def start_virtual_display(screen="1024x768x24", timeout=60):
+    """An Xvfb server on a display number it picks itself; returns (process, ':N') once it accepts clients.
+
+    Xvfb -displayfd writes the number when it is ready, and a server of our own needs no authorization file.
+    xvfb-run -a, used here before, took one file per process (named by the pid): the malformed-mesh test runs
+    meshes on two threads, and when two xvfb-run calls used that file at once a meshlabserver could abort (exit 134)
+    before writing its log. That failed a CI run; four loops of xvfb-run sharing one file aborted 2 runs of 80. It
+    could also pick a number another server was about to take."""
+    read_end, write_end = os.pipe()
+    proc = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", screen, "-nolisten", "tcp"],
+                            pass_fds=(write_end,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    number = b""
+    deadline = time.monotonic() + timeout
+    while not number.endswith(b"\n") and time.monotonic() < deadline and proc.poll() is None:
+        if select.select([read_end], [], [], 1.0)[0]:
+            chunk = os.read(read_end, 16)
+            if not chunk:
+                break
+            number += chunk
+    os.close(read_end)
+    if not number.strip().isdigit():
+        stop_virtual_display(proc)
+        raise RuntimeError("could not start Xvfb")
+    return proc, ":" + number.strip().decode()
+
+
+def stop_virtual_display(proc):
+    proc.terminate()
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+
+
+@contextlib.contextmanager
+def virtual_display(screen="1024x768x24"):
+    """The environment of a process that runs on an Xvfb of its own (start_virtual_display), for a with block."""
+    proc, display = start_virtual_display(screen)
+    try:
+        env = dict(os.environ, DISPLAY=display)
+        env.pop("WAYLAND_DISPLAY", None)
+        yield env
+    finally:
+        stop_virtual_display(proc)
+
+
 def run_meshlabserver(meshlabserver, workdir, inputs, script, output=None, mask="fq", extra=None):
-    """Runs meshlabserver under xvfb-run. Returns (exit code, log text, console text)."""
+    """Runs meshlabserver on a virtual display of its own. Returns (exit code, log text, console text)."""
     log = os.path.join(workdir, os.path.basename(script) + ".log")
     if os.path.exists(log):
         os.remove(log)
-    # An auth file of our own: without one xvfb-run makes a temporary directory and, when it cannot remove it
-    # again, exits with 5 in place of meshlabserver's own status.
-    auth = os.path.join(workdir, ".Xauthority-%d" % os.getpid())
-    cmd = ["xvfb-run", "-a", "-f", auth, meshlabserver, "-l", log]
+    cmd = [meshlabserver, "-l", log]
     for i in inputs:
         cmd += ["-i", i]
     cmd += ["-s", script]
@@ -252,7 +300,8 @@ def run_meshlabserver(meshlabserver, workdir, inputs, script, output=None, mask=
         if mask:
             cmd += ["-m"] + mask.split()
     cmd += extra or []
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=900)
+    with virtual_display() as env:
+        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=900, env=env)
     text = open(log, errors="replace").read() if os.path.exists(log) else ""
     return proc.returncode, text, proc.stdout.decode(errors="replace")
 
