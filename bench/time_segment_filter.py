@@ -76,5 +76,6 @@ def main():
                     cpus, statistics.median(plain), statistics.median(segmented), difference,
                     statistics.median(logged)))
 
+
 if __name__ == "__main__":
     main()
