@@ -18,10 +18,17 @@ double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& 
   // thousands of points).
   double m[5][5] = {};  // m[a][b] = sum w u^a v^b
   double mh[3][3] = {}; // mh[a][b] = sum w h u^a v^b
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+  // Point i's height h over the PCA plane and its scaled coordinates (u, v) in it.
+  auto local = [&](Eigen::Index i, double& h, double& u, double& v) {
     const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
-    const double w = weights[i], h = d.dot(normal), u = d.dot(along), v = d.dot(across);
-    const double u2 = u * u, v2 = v * v;
+    h = d.dot(normal);
+    u = d.dot(along);
+    v = d.dot(across);
+  };
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    double h, u, v;
+    local(i, h, u, v);
+    const double w = weights[i], u2 = u * u, v2 = v * v;
     const double wu = w * u, wv = w * v, wu2 = w * u2, wv2 = w * v2, wuv = wu * v;
     m[0][0] += w;
     m[1][0] += wu;
@@ -63,8 +70,8 @@ double quadric_patch_rms(const Eigen::MatrixX3d& points, const Eigen::VectorXd& 
   // The residuals themselves, not sum w h^2 - c . rhs, which cancels on a surface the quadric fits exactly.
   double sum_r2 = 0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d d = points.row(i).transpose() - pca.centroid;
-    const double h = d.dot(normal), u = d.dot(along), v = d.dot(across);
+    double h, u, v;
+    local(i, h, u, v);
     const double r = h - (((c[0] * u + c[1] * v + c[3]) * u + (c[2] * v + c[4]) * v) + c[5]);
     sum_r2 += weights[i] * r * r;
   }
