@@ -91,6 +91,10 @@ std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& 
       fit_region_primitive(g, band, nullptr, scale.tolerance, scale.angle, 0.95, threads);
   if (!wider || wider->type == prim.type)
     return std::nullopt;
+  // Fitted to the rings as well, a type can bend to them at the region's cost: then it is a compromise across an
+  // edge, not the wider surface the region is part of.
+  if (sampled_rms(g, *wider, region) > sampled_rms(g, prim, region))
+    return std::nullopt;
   return wider;
 }
 

@@ -14,6 +14,7 @@
 //                          surface meeting it at an edge is near it only on a band narrower than tol;
 //         sampled_share    the share (by area) of at most kShareSampleCount evenly strided faces that agree;
 //                          agreeing_share_reaches, whether that share over all of them reaches a threshold;
+//         sampled_rms      the RMS (by area) of those faces' centroid distances to a primitive;
 //         face_samples     the centroids, normals and areas of at most max_count evenly strided faces, as
 //                          fits take them (of one list, or of two as if joined);
 //         face_cost        how badly a primitive explains a face: the centroid's distance plus up to one
@@ -222,6 +223,21 @@ inline double sampled_share(const GrowingFaces& g, const Primitive& prim, const 
                             double angle)
 {
   return strided_share(g, prim, faces, tol, angle, kShareSampleCount);
+}
+
+// The RMS (by area) of the centroid distances to prim of the kShareSampleCount-strided faces sampled_share takes.
+inline double sampled_rms(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces)
+{
+  const std::size_t n = faces.size();
+  const std::size_t count = std::min(n, std::size_t(kShareSampleCount));
+  double squares = 0, all = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t f = std::size_t(faces[count == n ? i : (i * n) / count]);
+    const double d = face_near_primitive(prim, g.centroid[f], g.normal[f]).distance;
+    squares += g.area[f] * d * d;
+    all += g.area[f];
+  }
+  return all > 0 ? std::sqrt(squares / all) : 0.0;
 }
 
 inline double face_cost(const GrowingFaces& g, const Primitive& prim, int f, double tol)

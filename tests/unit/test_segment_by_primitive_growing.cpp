@@ -684,3 +684,114 @@ TEST(MergeRegions, ReturnsTheBordersOfTheMergedRegions)
 }
 
 } // namespace
+
+namespace {
+
+// GrowingFaces of an extruded profile z = height(x) over a grid of squares of side h (two triangles each),
+// x in [x0, x1], y in [0, 2]: exact face normals and areas, every face valid.
+template <class Height>
+GrowingFaces extruded_profile(double x0, double x1, double h, Height height, FaceAdjacency& adj)
+{
+  const int nx = int(std::lround((x1 - x0) / h)), ny = int(std::lround(2.0 / h));
+  std::vector<Eigen::Vector3d> points;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      points.emplace_back(x0 + i * h, j * h, height(x0 + i * h));
+  auto id = [&](int i, int j) { return j * (nx + 1) + i; };
+  std::vector<int> corners;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      for (const int v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)})
+        corners.push_back(v);
+  adj = face_adjacency_from_corners(corners, points.size(), 1);
+  GrowingFaces g;
+  for (std::size_t f = 0; 3 * f < corners.size(); ++f) {
+    const Eigen::Vector3d& a = points[std::size_t(corners[3 * f])];
+    const Eigen::Vector3d& b = points[std::size_t(corners[3 * f + 1])];
+    const Eigen::Vector3d& c = points[std::size_t(corners[3 * f + 2])];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    g.centroid.push_back((a + b + c) / 3);
+    g.normal.push_back(n.normalized());
+    g.area.push_back(0.5 * n.norm());
+    g.valid.push_back(1);
+    g.deleted.push_back(0);
+  }
+  return g;
+}
+
+// wider_type for the region of the faces whose centroid lies at 0 < x < w, grown with `prim` and stopped there;
+// `band` is what the candidate type was fitted on.
+std::optional<Primitive> wider_type_of_strip(const GrowingFaces& g, const FaceAdjacency& adj, double w,
+                                             const GrowingScale& scale, const Primitive& prim,
+                                             std::vector<int>& region, std::vector<int>& band)
+{
+  std::vector<int> label(g.area.size(), -1), open_faces;
+  region.clear();
+  for (std::size_t f = 0; f < label.size(); ++f)
+    if (g.centroid[f].x() > 0 && g.centroid[f].x() < w) {
+      label[f] = 0;
+      region.push_back(int(f));
+    }
+  for (int f : region)
+    for (int k = adj.offset[std::size_t(f)]; k < adj.offset[std::size_t(f) + 1]; ++k)
+      if (label[std::size_t(adj.neighbour[std::size_t(k)])] < 0) {
+        open_faces.push_back(f);
+        break;
+      }
+  FaceStamps stamps;
+  stamps.stamp.assign(g.area.size(), 0);
+  return grow_detail::wider_type(g, adj, scale, prim, region, open_faces, label, stamps, band, 1);
+}
+
+} // namespace
+
+// A flat strip 0.2 wide whose edges turn up as arcs of radius 0.2: the plane it grew with stops at the arcs, and
+// the type fitted to it and its rings is a cylinder (radius about 1.1) that bends to the arcs. It fits the strip
+// worse than its plane, which fits it exactly: the region stays a plane.
+TEST(WiderType, RefusesATypeThatFitsTheStoppedRegionWorse)
+{
+  FaceAdjacency adj;
+  const double w = 0.2, r = 0.2;
+  const GrowingFaces g = extruded_profile(-0.6, 0.8, 0.05, [&](double x) {
+    const double d = x < 0 ? -x : x > w ? x - w : 0;
+    return d >= r ? d : r - std::sqrt(r * r - d * d);
+  }, adj);
+  GrowingScale scale;
+  scale.tolerance = 0.02;
+  scale.angle = radians_from_degrees(15);
+  const Primitive plane = test_fit::make_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ());
+  std::vector<int> region, band;
+  EXPECT_FALSE(wider_type_of_strip(g, adj, w, scale, plane, region, band));
+  const std::optional<Primitive> fit = fit_region_primitive(g, band, nullptr, scale.tolerance, scale.angle, 0.95);
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->type, PrimitiveType::Cylinder) << "the band's fit, refused";
+  EXPECT_GT(sampled_rms(g, *fit, region), 1e-4);
+  EXPECT_EQ(sampled_rms(g, plane, region), 0.0);
+}
+
+// A strip 0.3 wide of a cylinder of radius 1, grown as the plane fitted to it: the cylinder fitted to it and its
+// rings fits the strip better, and takes over.
+TEST(WiderType, TakesTheCylinderAStripOfItWasGrownAsAPlane)
+{
+  FaceAdjacency adj;
+  const double w = 0.3, r = 1.0;
+  const GrowingFaces g = extruded_profile(-0.6, 0.9, 0.05, [&](double x) {
+    return r - std::sqrt(r * r - (x - 0.5 * w) * (x - 0.5 * w));
+  }, adj);
+  GrowingScale scale;
+  scale.tolerance = 0.01;
+  scale.angle = radians_from_degrees(15);
+  std::vector<int> region, band;
+  for (std::size_t f = 0; f < g.area.size(); ++f)
+    if (g.centroid[f].x() > 0 && g.centroid[f].x() < w)
+      region.push_back(int(f));
+  const std::optional<Primitive> plane =
+      fit_region_primitive(g, region, nullptr, scale.tolerance, scale.angle, 0.9);
+  ASSERT_TRUE(plane);
+  ASSERT_EQ(plane->type, PrimitiveType::Plane);
+  const std::optional<Primitive> wider = wider_type_of_strip(g, adj, w, scale, *plane, region, band);
+  ASSERT_TRUE(wider);
+  EXPECT_EQ(wider->type, PrimitiveType::Cylinder);
+  EXPECT_NEAR(wider->radius, r, 0.05);
+  EXPECT_LT(sampled_rms(g, *wider, region), sampled_rms(g, *plane, region));
+}
