@@ -15,8 +15,8 @@
 //         time the region has grown by half. When growth stops, a primitive of another type fitted on the
 //         region and kBandRings rings around it (95% must agree), and fitting the stopped region itself no
 //         worse (sampled_rms), replaces it and growth resumes (a plane patch that is part of a large
-//         cylinder), twice at most. Regions smaller than min_region_faces or
-//         curved more tightly than min_curvature_radius are undone, their faces marked failed.
+//         cylinder), twice at most. Regions smaller than min_region_faces or curved more tightly than
+//         min_curvature_radius are undone, their faces marked failed.
 // Cost:   O(F) for the seed order (sorted bucket by bucket); growth visits each face O(1) times per refit of its
 //         region, and refits happen at geometric size steps on at most kFitSampleCount faces.
 #ifndef PRIMITIVE_EDIT_GROW_REGIONS_H
@@ -100,9 +100,10 @@ void grow_while_agreeing(const GrowingFaces& g, const FaceAdjacency& adj, const 
                          std::vector<int>& open_faces);
 
 // A primitive of another type than `prim` that the stopped region and kBandRings rings of unassigned faces
-// around it agree with (95%) and that fits the stopped region no worse than prim (sampled_rms), or nullopt. The band is the region followed by its rings, the first ring walked
-// from the region's open faces (grow_while_agreeing) rather than from all of its faces. The candidate types are
-// fitted on `threads` (the result does not depend on them).
+// around it agree with (95%) and that fits the stopped region no worse than prim (sampled_rms), or nullopt. The
+// band is the region followed by its rings, the first ring walked from the region's open faces
+// (grow_while_agreeing) rather than from all of its faces. The candidate types are fitted on `threads` (the
+// result does not depend on them).
 std::optional<Primitive> wider_type(const GrowingFaces& g, const FaceAdjacency& adj, const GrowingScale& scale,
                                     const Primitive& prim, const std::vector<int>& region,
                                     const std::vector<int>& open_faces, const std::vector<int>& label,
