@@ -156,23 +156,31 @@ inline void prefetch_share_face(const GrowingFaces& g, std::size_t f)
   prefetch(g.area.data() + f);
 }
 
-// Share (by area) of the faces[i * n / count], for count = min(n, max_count) evenly strided faces, for which
-// holds(f).
-template <class Holds>
-double strided_share_where(const GrowingFaces& g, const std::vector<int>& faces, std::size_t max_count, Holds holds)
+// body(f) for the faces[i * n / count], i = 0 .. count - 1, count = min(n, max_count): evenly strided faces, in
+// list order, the faces a few places ahead asked for early.
+template <class Body>
+void for_each_strided_face(const GrowingFaces& g, const std::vector<int>& faces, std::size_t max_count, Body body)
 {
   const std::size_t n = faces.size();
   const std::size_t count = std::min(n, max_count);
-  double in = 0, all = 0;
   auto at = [&](std::size_t i) { return std::size_t(faces[count == n ? i : (i * n) / count]); };
   for (std::size_t i = 0; i < count; ++i) {
     if (i + kShareAhead < count)
       prefetch_share_face(g, at(i + kShareAhead));
-    const int f = int(at(i));
-    all += g.area[std::size_t(f)];
-    if (holds(f))
-      in += g.area[std::size_t(f)];
+    body(at(i));
   }
+}
+
+// Share (by area) of the strided faces (for_each_strided_face) for which holds(f).
+template <class Holds>
+double strided_share_where(const GrowingFaces& g, const std::vector<int>& faces, std::size_t max_count, Holds holds)
+{
+  double in = 0, all = 0;
+  for_each_strided_face(g, faces, max_count, [&](std::size_t f) {
+    all += g.area[f];
+    if (holds(int(f)))
+      in += g.area[f];
+  });
   return all > 0 ? in / all : 0.0;
 }
 
@@ -225,18 +233,15 @@ inline double sampled_share(const GrowingFaces& g, const Primitive& prim, const 
   return strided_share(g, prim, faces, tol, angle, kShareSampleCount);
 }
 
-// The RMS (by area) of the centroid distances to prim of the kShareSampleCount-strided faces sampled_share takes.
+// The RMS (by area) of the centroid distances to prim of the strided faces sampled_share takes.
 inline double sampled_rms(const GrowingFaces& g, const Primitive& prim, const std::vector<int>& faces)
 {
-  const std::size_t n = faces.size();
-  const std::size_t count = std::min(n, std::size_t(kShareSampleCount));
   double squares = 0, all = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t f = std::size_t(faces[count == n ? i : (i * n) / count]);
+  for_each_strided_face(g, faces, kShareSampleCount, [&](std::size_t f) {
     const double d = face_near_primitive(prim, g.centroid[f], g.normal[f]).distance;
     squares += g.area[f] * d * d;
     all += g.area[f];
-  }
+  });
   return all > 0 ? std::sqrt(squares / all) : 0.0;
 }
 
