@@ -73,21 +73,32 @@ def majority_surface(faces, face_surface, vertex_count):
     return out
 
 
+class ScanByTrueSurface:
+    """A scan and its truth: the reference's surfaces (surface_of: B-rep face -> surface; prims: the true
+    primitive of each surface, None for a free-form one), the scan's vertices and faces as arrays, and per face
+    its true surface (-1: none), centroid and area."""
+
+    def __init__(self, scan, truth, reference):
+        ref = json.load(open(reference))["faces"]
+        self.surface_of = {f["index"]: f.get("surface", f["index"]) for f in ref}
+        self.prims = {f["index"]: reference_primitive(f) for f in ref if self.surface_of[f["index"]] == f["index"]}
+        vertices, faces, _, _ = read_ply(scan)
+        self.vertices = np.array(vertices, float)
+        self.faces = np.array(faces, int)
+        self.face_surface = np.array([self.surface_of.get(t, -1) for t in read_truth(truth)])
+        tri = self.vertices[self.faces]
+        self.centroid = tri.mean(1)
+        self.area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scan"), ap.add_argument("truth"), ap.add_argument("reference"), ap.add_argument("out")
     ap.add_argument("--no-offset", action="store_true")
     a = ap.parse_args()
-    ref = json.load(open(a.reference))["faces"]
-    surface_of = {f["index"]: f.get("surface", f["index"]) for f in ref}
-    prims = {f["index"]: reference_primitive(f) for f in ref if f.get("surface", f["index"]) == f["index"]}
-    vertices, faces, _, _ = read_ply(a.scan)
-    v = np.array(vertices, float)
-    f = np.array(faces, int)
-    face_surface = np.array([surface_of.get(t, -1) for t in read_truth(a.truth)])
-    tri = v[f]
-    centroid = tri.mean(1)
-    area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    scan = ScanByTrueSurface(a.scan, a.truth, a.reference)
+    prims, v, f, face_surface = scan.prims, scan.vertices, scan.faces, scan.face_surface
+    centroid, area = scan.centroid, scan.area
 
     offset = {}
     for s, prim in prims.items():
