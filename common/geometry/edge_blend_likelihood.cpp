@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace primitive_edit {
@@ -26,10 +27,52 @@ double segment_density(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const
          (normal_cdf(t / sigma) - normal_cdf((t - length) / sigma));
 }
 
-// The profile in the section: the legs from the tangent points out to `far` along each ray, and the blend.
+bool within_reach(const EdgeSection& e, const Eigen::Vector3d& q, double reach)
+{
+  return q.dot(e.ray_a) < reach && q.dot(e.ray_b) < reach;
+}
+
+// A point of the window in the section with the parts of its density along the legs that do not depend on the
+// setback (the legs run from the tangent points, the setback s along each ray, to the far end): its coordinate
+// along each ray, the Gaussian across it and the normal CDF beyond the far end. A leg's density at setback s is then
+// across * (normal_cdf((along - s) / sigma) - beyond), one erfc instead of two and an exp.
+struct SectionPoint
+{
+  Eigen::Vector3d q;
+  double weight = 0;
+  double along_a = 0, across_a = 0, beyond_a = 0;
+  double along_b = 0, across_b = 0, beyond_b = 0;
+};
+
+// The window's points (within the reach of both rays, of positive weight), in their order.
+std::vector<SectionPoint> section_points(const EdgeSection& e, const Eigen::MatrixX3d& points,
+                                         const Eigen::VectorXd& weights, double sigma, double reach, double far)
+{
+  std::vector<SectionPoint> out;
+  const double norm = 1.0 / (std::sqrt(2 * kPi) * sigma);
+  auto leg = [&](const Eigen::Vector3d& q, const Eigen::Vector3d& ray, double& along, double& across,
+                 double& beyond) {
+    along = q.dot(ray);
+    across = std::exp(-(q - along * ray).squaredNorm() / (2 * sigma * sigma)) * norm;
+    beyond = normal_cdf((along - far) / sigma);
+  };
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    SectionPoint p;
+    p.q = in_section(e, points.row(i).transpose());
+    if (!within_reach(e, p.q, reach) || !(weights[i] > 0))
+      continue;
+    p.weight = weights[i];
+    leg(p.q, e.ray_a, p.along_a, p.across_a, p.beyond_a);
+    leg(p.q, e.ray_b, p.along_b, p.across_b, p.beyond_b);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The profile's blend in the section: the tangent points and, for a fillet, the arc between them.
 struct Profile
 {
-  Eigen::Vector3d ta, tb, fa, fb; // tangent points and the legs' far ends
+  Eigen::Vector3d ta, tb; // tangent points
   bool arc = false;
   Eigen::Vector3d centre;
   Eigen::Vector3d e1, e2; // the arc: centre + r (cos t e1 + sin t e2), t in [0, sweep]
@@ -38,13 +81,11 @@ struct Profile
   std::vector<Eigen::Vector3d> arc_points; // the arc's samples, at the middles of arc_samples equal pieces
 };
 
-Profile profile(const EdgeSection& e, BlendForm form, double s, double far, double sigma)
+Profile profile(const EdgeSection& e, BlendForm form, double s, double sigma)
 {
   Profile p;
   p.ta = s * e.ray_a;
   p.tb = s * e.ray_b;
-  p.fa = far * e.ray_a;
-  p.fb = far * e.ray_b;
   if (s > 0 && form == BlendForm::Fillet) {
     p.arc = true;
     p.centre = e.bisector * (s / std::cos(e.half_angle));
@@ -65,9 +106,11 @@ Profile profile(const EdgeSection& e, BlendForm form, double s, double far, doub
   return p;
 }
 
-double profile_density(const Profile& p, const Eigen::Vector3d& q, double sigma)
+double profile_density(const Profile& p, const SectionPoint& x, double setback, double sigma)
 {
-  double d = segment_density(q, p.ta, p.fa, sigma) + segment_density(q, p.tb, p.fb, sigma);
+  const Eigen::Vector3d& q = x.q;
+  double d = x.across_a * (normal_cdf((x.along_a - setback) / sigma) - x.beyond_a) +
+             x.across_b * (normal_cdf((x.along_b - setback) / sigma) - x.beyond_b);
   if (p.arc) {
     // Only the samples within 4 sigma of q along the arc count; the others add less than exp(-8) each.
     const double step = p.sweep / p.arc_samples, piece = p.blend_length / p.arc_samples;
@@ -88,9 +131,24 @@ double profile_density(const Profile& p, const Eigen::Vector3d& q, double sigma)
   return d;
 }
 
-bool within_reach(const EdgeSection& e, const Eigen::Vector3d& q, double reach)
+// The legs run 3 sigma past the reach, so that a point near the window's limit sees a whole leg.
+double far_end(double reach, double sigma) { return reach + 3 * sigma; }
+
+// edge_blend_cost over the window's points.
+double window_cost(const EdgeSection& e, const std::vector<SectionPoint>& points, double sigma, double reach,
+                   BlendForm form, double setback)
 {
-  return q.dot(e.ray_a) < reach && q.dot(e.ray_b) < reach;
+  // The density is normalised by the profile's length inside the window, where the points are.
+  const Profile p = profile(e, form, setback, sigma);
+  const double inside = 2 * (reach - setback) + p.blend_length;
+  const double outlier = kBlendOutlierShare / (4 * reach * reach); // uniform over the square of side 2 L
+  double cost = 0, weight = 0;
+  for (const SectionPoint& x : points) {
+    const double density = (1 - kBlendOutlierShare) * profile_density(p, x, setback, sigma) / inside + outlier;
+    cost -= x.weight * std::log(density);
+    weight += x.weight;
+  }
+  return weight > 0 ? cost / weight : 0.0;
 }
 
 } // namespace
@@ -98,21 +156,11 @@ bool within_reach(const EdgeSection& e, const Eigen::Vector3d& q, double reach)
 double edge_blend_cost(const EdgeSection& e, const Eigen::MatrixX3d& points, const Eigen::VectorXd& weights,
                        double sigma, double reach, BlendForm form, double setback)
 {
-  // The legs run 3 sigma past the reach, so that a point near the window's limit sees a whole leg; the density is
-  // normalised by the profile's length inside the window, where the points are.
-  const Profile p = profile(e, form, setback, reach + 3 * sigma, sigma);
-  const double inside = 2 * (reach - setback) + p.blend_length;
-  const double outlier = kBlendOutlierShare / (4 * reach * reach); // uniform over the square of side 2 L
-  double cost = 0, weight = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d q = in_section(e, points.row(i).transpose());
-    if (!within_reach(e, q, reach) || !(weights[i] > 0))
-      continue;
-    const double density = (1 - kBlendOutlierShare) * profile_density(p, q, sigma) / inside + outlier;
-    cost -= weights[i] * std::log(density);
-    weight += weights[i];
-  }
-  return weight > 0 ? cost / weight : 0.0;
+  // A setback at or beyond the reach leaves no legs in the window: no profile to weigh the points by.
+  if (!(setback >= 0 && setback < reach))
+    return std::numeric_limits<double>::infinity();
+  return window_cost(e, section_points(e, points, weights, sigma, reach, far_end(reach, sigma)), sigma, reach, form,
+                     setback);
 }
 
 std::optional<EdgeBlendEstimate> best_edge_blend(const EdgeSection& e, const Eigen::MatrixX3d& points,
@@ -123,12 +171,11 @@ std::optional<EdgeBlendEstimate> best_edge_blend(const EdgeSection& e, const Eig
         max_setback < reach) ||
       points.rows() != weights.size())
     return std::nullopt;
-  Eigen::Index used = 0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    used += weights[i] > 0 && within_reach(e, in_section(e, points.row(i).transpose()), reach) ? 1 : 0;
+  const std::vector<SectionPoint> window = section_points(e, points, weights, sigma, reach, far_end(reach, sigma));
+  const auto used = Eigen::Index(window.size());
   if (used == 0)
     return std::nullopt;
-  const double sharp = edge_blend_cost(e, points, weights, sigma, reach, BlendForm::Fillet, 0.0);
+  const double sharp = window_cost(e, window, sigma, reach, BlendForm::Fillet, 0.0);
   EdgeBlendEstimate best;
   double best_cost = sharp;
   const double coarse = max_setback / kBlendSetbackSteps;
@@ -136,7 +183,7 @@ std::optional<EdgeBlendEstimate> best_edge_blend(const EdgeSection& e, const Eig
     // The coarse grid, then kBlendFineSteps finer steps on each side of this form's best.
     double form_setback = 0, form_cost = sharp;
     auto consider = [&](double s) {
-      const double c = edge_blend_cost(e, points, weights, sigma, reach, form, s);
+      const double c = window_cost(e, window, sigma, reach, form, s);
       if (c < form_cost)
         form_cost = c, form_setback = s;
     };

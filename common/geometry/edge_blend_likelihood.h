@@ -6,7 +6,8 @@
 //         ray through the blend to L along the other; points beyond L along either ray are left out), and for the
 //         search the largest setback (below L).
 // Output: edge_blend_cost: the weighted negative log-likelihood of the points, per unit weight, under the profile
-//         with a blend of the given form and setback (0: the sharp edge). best_edge_blend: the form and setback of
+//         with a blend of the given form and setback (0: the sharp edge; +infinity for a setback outside [0, L),
+//         which leaves the profile no legs in the window). best_edge_blend: the form and setback of
 //         least cost, on a grid of kBlendSetbackSteps setbacks up to the largest refined by kBlendFineSteps on
 //         each side of each form's best (a chamfer only when it gains kChamferGainMargin more than the fillet: near the noise
 //         the two pass through nearly the same points), and its gain over the sharp edge
@@ -22,7 +23,9 @@
 //         noise of 0.5 mm: setback 0.7 mm for a sharp edge, 0.8 for a 1.5 mm fillet; bench/bracket/README.md),
 //         while the likelihood finds 0-0.1 and 1.3-1.5 mm.
 // Cost:   O(points) per cost (an arc's samples within 4 sigma of a point); the search is
-//         1 + 2 * (kBlendSetbackSteps + 2 * kBlendFineSteps) costs.
+//         1 + 2 * (kBlendSetbackSteps + 2 * kBlendFineSteps) costs, and takes each point into the section and the
+//         parts of its legs' densities that do not depend on the setback (the Gaussian across each ray, the CDF
+//         beyond its far end) once, leaving one erfc per leg and cost.
 #ifndef PRIMITIVE_EDIT_EDGE_BLEND_LIKELIHOOD_H
 #define PRIMITIVE_EDIT_EDGE_BLEND_LIKELIHOOD_H
 

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace {
@@ -111,6 +112,69 @@ TEST(EdgeBlendLikelihood, BadInputIsRefused)
   Eigen::MatrixX3d far(1, 3);
   far << 20, 30, 5;
   EXPECT_FALSE(best_edge_blend(e, far, weights, 0.5, 4.0, 3.0));
+}
+
+// The cost of one point against the profile's density integrated by brute force: the legs from the tangent points to
+// 3 sigma past the reach and the blend, each in steps of 1e-4, under the Gaussian of sigma in the section.
+double brute_force_cost(const EdgeSection& e, const Eigen::Vector3d& p, double sigma, double reach, BlendForm form,
+                        double s)
+{
+  const Eigen::Vector3d q = in_section(e, p);
+  auto gauss = [&](const Eigen::Vector3d& x) {
+    return std::exp(-(q - x).squaredNorm() / (2 * sigma * sigma)) / (2 * kPi * sigma * sigma);
+  };
+  constexpr double ds = 1e-4;
+  const double far = reach + 3 * sigma;
+  double density = 0;
+  for (double t = s + 0.5 * ds; t < far; t += ds)
+    density += (gauss(t * e.ray_a) + gauss(t * e.ray_b)) * ds;
+  double blend = 0;
+  if (form == BlendForm::Fillet) {
+    const Eigen::Vector3d centre = e.bisector * (s / std::cos(e.half_angle));
+    const double radius = s * std::tan(e.half_angle);
+    const Eigen::Vector3d u = (s * e.ray_a - centre) / radius, w = (s * e.ray_b - centre) / radius;
+    const Eigen::Vector3d v = (w - u * w.dot(u)).normalized();
+    const double sweep = kPi - 2 * e.half_angle;
+    blend = radius * sweep;
+    for (double a = 0.5 * ds / radius; a < sweep; a += ds / radius)
+      density += gauss(centre + radius * (std::cos(a) * u + std::sin(a) * v)) * ds;
+  } else {
+    blend = s * (e.ray_b - e.ray_a).norm();
+    const Eigen::Vector3d along = (e.ray_b - e.ray_a).normalized();
+    for (double t = 0.5 * ds; t < blend; t += ds)
+      density += gauss(s * e.ray_a + t * along) * ds;
+  }
+  const double inside = 2 * (reach - s) + blend;
+  return -std::log((1 - kBlendOutlierShare) * density / inside + kBlendOutlierShare / (4 * reach * reach));
+}
+
+TEST(EdgeBlendLikelihood, CostIsTheProfilesDensityIntegrated)
+{
+  const EdgeSection e = plate_edge();
+  constexpr double sigma = 0.2, reach = 2.0;
+  for (BlendForm form : {BlendForm::Fillet, BlendForm::Chamfer})
+    for (double s : {0.0, 0.4, 1.2})
+      for (const Eigen::Vector3d& p : {Eigen::Vector3d(20, 0.3, 4.9), Eigen::Vector3d(7, 1.5, 5.2),
+                                      Eigen::Vector3d(-3, 0.1, 3.8), Eigen::Vector3d(20, 0.9, 4.6)}) {
+        Eigen::MatrixX3d points(1, 3);
+        points.row(0) = p.transpose();
+        const double cost = edge_blend_cost(e, points, Eigen::VectorXd::Ones(1), sigma, reach, form, s);
+        EXPECT_NEAR(cost, brute_force_cost(e, p, sigma, reach, form, s), 2e-3)
+            << "form " << int(form) << " setback " << s << " point " << p.transpose();
+      }
+}
+
+TEST(EdgeBlendLikelihood, SetbackOutsideTheReachHasNoCost)
+{
+  const EdgeSection e = plate_edge();
+  Eigen::MatrixX3d points(1, 3);
+  points << 20, 0.3, 4.9;
+  const Eigen::VectorXd weights = Eigen::VectorXd::Ones(1);
+  for (double s : {2.0, 3.5, -0.1, std::nan("")})
+    EXPECT_EQ(edge_blend_cost(e, points, weights, 0.2, 2.0, BlendForm::Fillet, s),
+              std::numeric_limits<double>::infinity())
+        << "setback " << s;
+  EXPECT_TRUE(std::isfinite(edge_blend_cost(e, points, weights, 0.2, 2.0, BlendForm::Fillet, 1.9)));
 }
 
 // Tolerance 0.5: reach 2.5, largest setback 2. Only the top's points 2-2.5 from the edge give the spread; the
