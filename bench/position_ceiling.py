@@ -22,7 +22,7 @@ Usage: /usr/bin/python3 bench/position_ceiling.py SCAN.ply TRUTH.txt REFERENCE.j
            [--relations none|coaxial|all] [--sizes]
 then   build/bench/bench_segment_scan SCAN.ply --labels TRUE.ply --primitives OUT_PRIMS.txt --snapped OUT.ply
        build/bench/bracket/measure_scan OUT.ply bench/data/bracket_reference.ply
-Cost: about a second for 150k faces, 10 s for 1M (numpy, 40 surfaces). Needs numpy.
+Cost: about 1 s for 150k faces, 5 s for 1M (numpy, 40 surfaces). Needs numpy.
 """
 import argparse
 import math
