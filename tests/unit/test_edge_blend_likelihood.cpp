@@ -164,7 +164,7 @@ TEST(EdgeBlendLikelihood, CostIsTheProfilesDensityIntegrated)
       }
 }
 
-TEST(EdgeBlendLikelihood, SetbackOutsideTheReachHasNoCost)
+TEST(EdgeBlendLikelihood, SetbackOutsideTheReachCostsInfinity)
 {
   const EdgeSection e = plate_edge();
   Eigen::MatrixX3d points(1, 3);
