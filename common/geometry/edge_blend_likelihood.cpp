@@ -32,6 +32,9 @@ bool within_reach(const EdgeSection& e, const Eigen::Vector3d& q, double reach)
   return q.dot(e.ray_a) < reach && q.dot(e.ray_b) < reach;
 }
 
+// The legs run 3 sigma past the reach, so that a point near the window's limit sees a whole leg.
+double far_end(double reach, double sigma) { return reach + 3 * sigma; }
+
 // A point of the window in the section with the parts of its density along the legs that do not depend on the
 // setback (the legs run from the tangent points, the setback s along each ray, to the far end): its coordinate
 // along each ray, the Gaussian across it and the normal CDF beyond the far end. A leg's density at setback s is then
@@ -46,9 +49,10 @@ struct SectionPoint
 
 // The window's points (within the reach of both rays, of positive weight), in their order.
 std::vector<SectionPoint> section_points(const EdgeSection& e, const Eigen::MatrixX3d& points,
-                                         const Eigen::VectorXd& weights, double sigma, double reach, double far)
+                                         const Eigen::VectorXd& weights, double sigma, double reach)
 {
   std::vector<SectionPoint> out;
+  const double far = far_end(reach, sigma);
   const double norm = 1.0 / (std::sqrt(2 * kPi) * sigma);
   auto leg = [&](const Eigen::Vector3d& q, const Eigen::Vector3d& ray, double& along, double& across,
                  double& beyond) {
@@ -131,9 +135,6 @@ double profile_density(const Profile& p, const SectionPoint& x, double setback, 
   return d;
 }
 
-// The legs run 3 sigma past the reach, so that a point near the window's limit sees a whole leg.
-double far_end(double reach, double sigma) { return reach + 3 * sigma; }
-
 // edge_blend_cost over the window's points.
 double window_cost(const EdgeSection& e, const std::vector<SectionPoint>& points, double sigma, double reach,
                    BlendForm form, double setback)
@@ -159,8 +160,7 @@ double edge_blend_cost(const EdgeSection& e, const Eigen::MatrixX3d& points, con
   // A setback at or beyond the reach leaves no legs in the window: no profile to weigh the points by.
   if (!(setback >= 0 && setback < reach))
     return std::numeric_limits<double>::infinity();
-  return window_cost(e, section_points(e, points, weights, sigma, reach, far_end(reach, sigma)), sigma, reach, form,
-                     setback);
+  return window_cost(e, section_points(e, points, weights, sigma, reach), sigma, reach, form, setback);
 }
 
 std::optional<EdgeBlendEstimate> best_edge_blend(const EdgeSection& e, const Eigen::MatrixX3d& points,
@@ -171,7 +171,7 @@ std::optional<EdgeBlendEstimate> best_edge_blend(const EdgeSection& e, const Eig
         max_setback < reach) ||
       points.rows() != weights.size())
     return std::nullopt;
-  const std::vector<SectionPoint> window = section_points(e, points, weights, sigma, reach, far_end(reach, sigma));
+  const std::vector<SectionPoint> window = section_points(e, points, weights, sigma, reach);
   const auto used = Eigen::Index(window.size());
   if (used == 0)
     return std::nullopt;
