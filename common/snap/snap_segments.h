@@ -16,11 +16,14 @@
 //         first repaired (repair_folds, with repair_folds on): vertices near it slide along their
 //         primitive or edge, and vertices of unsnapped faces along the scan's surface as it was (followed
 //         face to face by locate_on_surface, on their side of a crease), until it unfolds
-//         (repaired_vertices counts them). Where a fold remains, one of its moved vertices (the most
-//         snapped, then the most displaced) falls back one step (edge/corner -> single projection -> the
-//         mean of its neighbours -> original position), repeated until no face flips (reverted_vertices
-//         counts them). The mean comes before the scan because a vertex sent back to a rough scan stands
-//         off its snapped neighbours and folds their faces in turn. A vertex sent back to the scan then goes
+//         (repaired_vertices counts them). Where a fold remains, one of its moved vertices falls back one
+//         step (edge/corner -> single projection -> the mean of its neighbours projected onto its surface ->
+//         that mean itself -> original position), repeated until no face flips (reverted_vertices counts
+//         them): of the three, the one whose step unfolds the face with the shortest move, else the most
+//         snapped, then the most displaced. The steps along the surface come first, and the vertex that can
+//         take one, because a vertex sent back to a rough scan stands off its snapped neighbours and folds
+//         their faces in turn (the 1M-face bracket scan snapped onto its true primitives: 22,374 vertices held
+//         back, 95.8% within 0.42 mm, against 12,396 and 97.2%). A vertex sent back to the scan then goes
 //         as far towards its projection as its faces allow without folding (in eighths of the way, a few
 //         sweeps; partway_vertices counts those that moved): on a rough scan it stood 0.3-0.6 mm off. Corners,
 //         vertices on the mesh's border, on a crease of unsnapped faces or on the border of a segment
@@ -111,8 +114,9 @@ class Snapper
   using ScalarType = typename MeshType::ScalarType;
   // kSlid: a vertex of unsnapped faces only, moved by the repair.
   enum Kind : std::uint8_t { kUntouched, kSingle, kEdge, kCorner, kSlid };
-  // How far a vertex has fallen back from where its kind puts it (hold_back): kOnTarget, then, for edges and
-  // corners, kOnNearest (the single projection), then kBetween (the mean of its neighbours), then kAtRest
+  // How far a vertex has fallen back from where its kind puts it (hold_back): kOnTarget, then kOnNearest (for
+  // edges and corners the single projection, for a single projection the mean of its neighbours projected onto
+  // its surface), then kBetween (the mean of its neighbours), then kAtRest
   // (where it was; also every untouched vertex); kPartway: back from kAtRest towards its projection
   // (go_partway).
   enum Stage : std::uint8_t { kOnTarget, kOnNearest, kBetween, kPartway, kAtRest };
@@ -494,15 +498,26 @@ private:
     return face_is_folded(reference_[f], now(c[0]), now(c[1]), now(c[2]));
   }
 
-  // The vertex of face f to fall back: the most snapped (edge/corner before single), then the most displaced.
+  // The vertex of face f to fall back: of those whose next step back unfolds f, the one that moves least;
+  // when none does, the most snapped (edge/corner before single), then the most displaced.
   int vertex_to_fall_back(std::size_t f) const
   {
-    int chosen = -1;
+    int chosen = -1, unfolding = -1;
     std::pair<int, double> chosen_key(-1, 0.0);
+    double unfolding_move = std::numeric_limits<double>::infinity();
+    const int* c = &face_vertex_[3 * f];
     for (int j = 0; j < 3; ++j) {
-      const std::size_t v = std::size_t(face_vertex_[3 * f + std::size_t(j)]);
+      const std::size_t v = std::size_t(c[j]);
       if (stage_[v] == kAtRest)
         continue;
+      const FallBack step = next_fall_back(v);
+      Eigen::Vector3d p[3] = {now(c[0]), now(c[1]), now(c[2])};
+      p[j] = step.position;
+      const double move = (step.position - now(int(v))).norm();
+      if (!face_is_folded(reference_[f], p[0], p[1], p[2]) && move < unfolding_move) {
+        unfolding = static_cast<int>(v);
+        unfolding_move = move;
+      }
       const int level = (stage_[v] == kOnTarget && (kind_[v] == kEdge || kind_[v] == kCorner)) ? 1 : 0;
       const std::pair<int, double> key(level, (now(int(v)) - rest(int(v))).norm());
       if (chosen < 0 || key > chosen_key) {
@@ -510,23 +525,26 @@ private:
         chosen_key = key;
       }
     }
-    return chosen;
+    return unfolding >= 0 ? unfolding : chosen;
   }
 
-  // One step back: edge/corner -> single projection of the original position -> the mean of the vertex's
-  // neighbours as they are now -> original position. A vertex the repair slid goes straight back: it belongs
-  // to no snapped segment.
-  void fall_back(std::size_t v)
+  struct FallBack
   {
+    Stage stage;
+    Eigen::Vector3d position;
+  };
+
+  // One step back: edge/corner -> single projection of the original position; a single projection -> the mean
+  // of the vertex's neighbours as they are now, projected onto its surface; then that mean itself -> original
+  // position. A vertex the repair slid goes straight back: it belongs to no snapped segment.
+  FallBack next_fall_back(std::size_t v) const
+  {
+    std::vector<int> groups;
     if (stage_[v] == kOnTarget && (kind_[v] == kEdge || kind_[v] == kCorner)) {
-      std::vector<int> groups;
       gather(v, groups);
       const Eigen::Vector3d target = nearest_projection(groups, rest(int(v)));
-      if (representable(target)) {
-        stage_[v] = kOnNearest;
-        m_.vert[v].P() = to_coord(target);
-        return;
-      }
+      if (representable(target))
+        return {kOnNearest, target};
     }
     if (stage_[v] < kBetween && kind_[v] != kSlid) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -539,14 +557,23 @@ private:
             ++count;
           }
         }
-      if (count > 0 && representable(sum / count)) {
-        stage_[v] = kBetween;
-        m_.vert[v].P() = to_coord(sum / count);
-        return;
+      if (count > 0 && stage_[v] == kOnTarget && kind_[v] == kSingle) {
+        gather(v, groups);
+        if (!groups.empty())
+          if (const Eigen::Vector3d target = nearest_projection(groups, sum / count); representable(target))
+            return {kOnNearest, target};
       }
+      if (count > 0 && representable(sum / count))
+        return {kBetween, sum / count};
     }
-    stage_[v] = kAtRest;
-    m_.vert[v].P() = original_[v];
+    return {kAtRest, to_eigen(original_[v])};
+  }
+
+  void fall_back(std::size_t v)
+  {
+    const FallBack step = next_fall_back(v);
+    stage_[v] = step.stage;
+    m_.vert[v].P() = step.stage == kAtRest ? original_[v] : to_coord(step.position);
   }
 
   void hold_back()

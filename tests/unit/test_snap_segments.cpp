@@ -244,44 +244,87 @@ TYPED_TEST(SnapSegmentsTest, PlaneCylinderRim)
   EXPECT_EQ(on_both, 0);
 }
 
-// A triangle whose inner vertex would be projected across the opposite edge: snapping it would flip
-// the face, and so would the mean of its two neighbours (on that edge), so it goes back to where it was, then
-// as far towards the sphere as the face allows: 3/8 of the way (the edge x + y = 1 is crossed at 0.49).
-TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
+// Whether snapping the soup onto the ball without the guard flips its face 0: the setups below must.
+template <class M>
+bool flips_without_guard(const Soup& s, const Primitive& ball, SnapOptions options = {})
+{
+  M m;
+  build_mesh(m, s);
+  const Eigen::Vector3d before = face_normal(m, 0);
+  options.prevent_flips = false;
+  snap_segments(m, s.labels, {ball}, options);
+  return face_normal(m, 0).dot(before) < 0;
+}
+
+Primitive unit_ball()
+{
+  Primitive ball;
+  ball.type = PrimitiveType::Sphere;
+  ball.radius = 1;
+  return ball;
+}
+
+// A triangle whose inner vertex would be projected across the opposite edge: snapping it would flip the face.
+// One of the two outer vertices slides along the sphere to the mean of its neighbours, which unfolds it: every
+// vertex stays on the sphere, none goes back to the scan.
+TYPED_TEST(SnapSegmentsTest, FlippedFaceUnfoldsOnItsSurface)
 {
   using M = TypeParam;
   Soup s;
   s.points = {{1, 0, 0}, {0, 1, 0}, {0.3, 0.3, -0.01}};
   s.triangles = {{0, 1, 2}};
   s.labels = {0};
-  Primitive ball;
-  ball.type = PrimitiveType::Sphere;
-  ball.radius = 1;
-
-  M unguarded;
-  build_mesh(unguarded, s);
-  const Eigen::Vector3d before = face_normal(unguarded, 0);
-  SnapOptions options;
-  options.prevent_flips = false;
-  snap_segments(unguarded, s.labels, {ball}, options);
-  ASSERT_LT(face_normal(unguarded, 0).dot(before), 0) << "the setup must flip without the guard";
+  const Primitive ball = unit_ball();
+  ASSERT_TRUE(flips_without_guard<M>(s, ball)) << "the setup must flip without the guard";
 
   M m;
   build_mesh(m, s);
+  const Eigen::Vector3d before = face_normal(m, 0);
+  const SnapReport report = snap_segments(m, s.labels, {ball});
+  EXPECT_GT(face_normal(m, 0).dot(before), 0);
+  EXPECT_EQ(report.reverted_vertices, 1);
+  EXPECT_EQ(report.partway_vertices, 0);
+  EXPECT_EQ(report.folded_faces, 0);
+  for (int v = 0; v < 3; ++v)
+    EXPECT_LT(std::abs(signed_distance_to_primitive(ball, eig(m.vert[size_t(v)].cP()))), tolerance<M>(1.0))
+        << "vertex " << v;
+}
+
+// The same triangle with faces on the far side of its outer vertices, which hold the means of their neighbours
+// near them: no vertex's step along the sphere unfolds it, nor the mean of the inner vertex's two neighbours (on
+// that edge), so the inner vertex goes back to where it was, then as far towards the sphere as the face allows:
+// 3/8 of the way (the edge x + y = 1 is crossed at 0.49).
+TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
+{
+  using M = TypeParam;
+  Soup s;
+  const auto on_ball = [](double x, double y, double z) { return Eigen::Vector3d(x, y, z).normalized(); };
+  s.points = {{1, 0, 0}, {0, 1, 0}, {0.3, 0.3, -0.01}, on_ball(0.6, -0.8, 0), on_ball(0.8, -0.36, -0.48),
+              on_ball(-0.8, 0.6, 0), on_ball(-0.36, 0.8, -0.48)};
+  s.triangles = {{0, 1, 2}, {0, 3, 4}, {1, 5, 6}};
+  s.labels = {0, 0, 0};
+  const Primitive ball = unit_ball();
+  ASSERT_TRUE(flips_without_guard<M>(s, ball)) << "the setup must flip without the guard";
+
+  M m;
+  build_mesh(m, s);
+  const Eigen::Vector3d before = face_normal(m, 0);
   const Eigen::Vector3d inner = eig(m.vert[2].cP());
   const SnapReport report = snap_segments(m, s.labels, {ball});
   EXPECT_GT(face_normal(m, 0).dot(before), 0);
   EXPECT_EQ(report.reverted_vertices, 1);
   EXPECT_EQ(report.partway_vertices, 1);
-  EXPECT_EQ(report.moved_vertices, 3);
+  EXPECT_EQ(report.moved_vertices, 7);
   EXPECT_EQ(report.folded_faces, 0);
   const Eigen::Vector3d partway = inner + 3.0 / 8.0 * (closest_point_on_primitive(ball, inner) - inner);
   EXPECT_LT((eig(m.vert[2].cP()) - partway).norm(), tolerance<M>(1.0));
+  EXPECT_EQ(eig(m.vert[0].cP()), s.points[0]);
+  EXPECT_EQ(eig(m.vert[1].cP()), s.points[1]);
 }
 
-// The same inner vertex with a third neighbour below: its projection still flips a face, but the mean of its
-// neighbours folds none, so it stops there instead of going back to where it was (the repair is off, so that the
-// hold-back alone is tested).
+// The inner vertex of a fan with a third neighbour below: its projection flips a face, and so does its step
+// along the sphere, but the mean of its neighbours folds none, so it stops there instead of going back to where it
+// was (the repair is off, so that the hold-back alone is tested). Its neighbours stay on the sphere.
 TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBackBetweenItsNeighbours)
 {
   using M = TypeParam;
@@ -290,18 +333,10 @@ TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBackBetweenItsNeighbours)
   s.points = {{1, 0, 0}, {0, 1, 0}, {below.x(), below.y(), below.z()}, {0.3, 0.3, -0.01}};
   s.triangles = {{3, 0, 1}, {3, 1, 2}, {3, 2, 0}};
   s.labels = {0, 0, 0};
-  Primitive ball;
-  ball.type = PrimitiveType::Sphere;
-  ball.radius = 1;
+  const Primitive ball = unit_ball();
   SnapOptions options;
   options.repair_folds = false;
-
-  M unguarded;
-  build_mesh(unguarded, s);
-  const Eigen::Vector3d before = face_normal(unguarded, 0);
-  options.prevent_flips = false;
-  snap_segments(unguarded, s.labels, {ball}, options);
-  ASSERT_LT(face_normal(unguarded, 0).dot(before), 0) << "the setup must flip without the guard";
+  ASSERT_TRUE(flips_without_guard<M>(s, ball, options)) << "the setup must flip without the guard";
 
   M m;
   build_mesh(m, s);
@@ -312,9 +347,12 @@ TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBackBetweenItsNeighbours)
   const SnapReport report = snap_segments(m, s.labels, {ball}, options);
   for (int f = 0; f < 3; ++f)
     EXPECT_GT(face_normal(m, f).dot(normals[size_t(f)]), 0) << "face " << f;
-  EXPECT_EQ(report.reverted_vertices, 1);
+  EXPECT_EQ(report.partway_vertices, 0);
   EXPECT_EQ(report.folded_faces, 0);
-  const Eigen::Vector3d mean = (Eigen::Vector3d(1, 0, 0) + Eigen::Vector3d(0, 1, 0) + below) / 3;
+  for (int v = 0; v < 3; ++v)
+    EXPECT_LT(std::abs(signed_distance_to_primitive(ball, eig(m.vert[size_t(v)].cP()))), tolerance<M>(1.0))
+        << "vertex " << v;
+  const Eigen::Vector3d mean = (eig(m.vert[0].cP()) + eig(m.vert[1].cP()) + eig(m.vert[2].cP())) / 3;
   EXPECT_LT((eig(m.vert[3].cP()) - mean).norm(), tolerance<M>(1.0));
 }
 
