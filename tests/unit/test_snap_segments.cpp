@@ -293,7 +293,7 @@ TYPED_TEST(SnapSegmentsTest, FlippedFaceUnfoldsOnItsSurface)
 // The same triangle with faces on the far side of its outer vertices, which hold the means of their neighbours
 // near them: no vertex's step along the sphere unfolds it, nor the mean of the inner vertex's two neighbours (on
 // that edge), so the inner vertex goes back to where it was, then as far towards the sphere as the face allows:
-// 3/8 of the way (the edge x + y = 1 is crossed at 0.49).
+// 7/16 of the way (the edge x + y = 1 is crossed at 0.49).
 TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
 {
   using M = TypeParam;
@@ -316,7 +316,7 @@ TYPED_TEST(SnapSegmentsTest, FlippingVertexFallsBack)
   EXPECT_EQ(report.partway_vertices, 1);
   EXPECT_EQ(report.moved_vertices, 7);
   EXPECT_EQ(report.folded_faces, 0);
-  const Eigen::Vector3d partway = inner + 3.0 / 8.0 * (closest_point_on_primitive(ball, inner) - inner);
+  const Eigen::Vector3d partway = inner + 7.0 / 16.0 * (closest_point_on_primitive(ball, inner) - inner);
   EXPECT_LT((eig(m.vert[2].cP()) - partway).norm(), tolerance<M>(1.0));
   EXPECT_EQ(eig(m.vert[0].cP()), s.points[0]);
   EXPECT_EQ(eig(m.vert[1].cP()), s.points[1]);
