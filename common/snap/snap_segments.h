@@ -23,9 +23,10 @@
 //         snapped, then the most displaced. The steps along the surface come first, and the vertex that can
 //         take one, because a vertex sent back to a rough scan stands off its snapped neighbours and folds
 //         their faces in turn (the 1M-face bracket scan snapped onto its true primitives: 22,374 vertices held
-//         back, 95.8% within 0.42 mm, against 12,396 and 97.2%). A vertex sent back to the scan then goes
-//         as far towards its projection as its faces allow without folding (in sixteenths of the way, up to
-//         8 sweeps; partway_vertices counts those that moved): on a rough scan it stood 0.3-0.6 mm off. Corners,
+//         back, 95.8% within 0.42 mm, against 12,396 and 97.2%). A vertex sent back to the scan or to the mean
+//         of its neighbours then goes as far towards its projection as its faces allow without folding (in
+//         sixteenths of the way, up to 8 sweeps; partway_vertices counts those that moved): on a rough scan it
+//         stood 0.3-0.6 mm off. Corners,
 //         vertices on the mesh's border, on a crease of unsnapped faces or on the border of a segment
 //         (but along the edge of two primitives) never slide. folded_faces and
 //         folded_area give what is left folded (zero with prevent_flips). A non-finite target leaves the
@@ -98,7 +99,8 @@ struct SnapReport
   // corner_vertices of them made it, the rest stand off their edge (out of reach, held back, sharp_edges off).
   int border_vertices = 0;
   int repaired_vertices = 0; // slid along their surface to unfold faces
-  int partway_vertices = 0;  // of the reverted ones that went back to the scan, brought part of the way back
+  int partway_vertices = 0;  // of the reverted ones that went back to the scan or between their neighbours, moved
+                             // part of the way to their surface
   int folded_faces = 0;      // left folded (normal turned over or area collapsed); 0 with prevent_flips
   double folded_area = 0;    // their area before snapping
   double mean_displacement = 0, max_displacement = 0;
@@ -117,7 +119,7 @@ class Snapper
   // How far a vertex has fallen back from where its kind puts it (hold_back): kOnTarget, then kOnNearest (for
   // edges and corners the single projection, for a single projection the mean of its neighbours projected onto
   // its surface), then kBetween (the mean of its neighbours), then kAtRest
-  // (where it was; also every untouched vertex); kPartway: back from kAtRest towards its projection
+  // (where it was; also every untouched vertex); kPartway: from kAtRest or kBetween towards its projection
   // (go_partway).
   enum Stage : std::uint8_t { kOnTarget, kOnNearest, kBetween, kPartway, kAtRest };
 
@@ -628,9 +630,9 @@ private:
     return true;
   }
 
-  // The vertices held back all the way to the scan, each moved as far along the line from its scan position to
-  // its projection as its faces allow without folding: 1, 15/16, ... 1/16 of the way, the first that folds no face.
-  // Sweeps again while one moved, as a neighbour's move can free another. Only a vertex's own faces can fold
+  // The vertices held back to the scan or to the mean of their neighbours, each moved as far along the line from
+  // where it is to its projection as its faces allow without folding: 1, 15/16, ... 1/16 of the way, the first that
+  // folds no face. Sweeps again while one moved, as a neighbour's move can free another. Only a vertex's own faces can fold
   // when it moves, so the mesh stays without folds.
   void go_partway()
   {
@@ -639,15 +641,16 @@ private:
     constexpr int kSteps = 16, kSweeps = 8;
     std::vector<int> held;
     for (std::size_t v = 0; v < m_.vert.size(); ++v)
-      if (!m_.vert[v].IsD() && stage_[v] == kAtRest &&
+      if (!m_.vert[v].IsD() && (stage_[v] == kAtRest || stage_[v] == kBetween) &&
           (kind_[v] == kSingle || kind_[v] == kEdge || kind_[v] == kCorner))
         held.push_back(int(v));
     std::vector<int> reached(held.size(), 0);  // sixteenths of the way taken
-    std::vector<Eigen::Vector3d> way(held.size());  // from the scan position to the projection
+    std::vector<Eigen::Vector3d> start(held.size()), way(held.size());  // from where it is to its projection
     std::vector<int> groups;
     for (std::size_t i = 0; i < held.size(); ++i) {
       gather(std::size_t(held[i]), groups);
-      way[i] = nearest_projection(groups, rest(held[i])) - rest(held[i]);
+      start[i] = now(held[i]);
+      way[i] = nearest_projection(groups, start[i]) - start[i];
     }
     for (int sweep = 0; sweep < kSweeps; ++sweep) {
       bool moved = false;
@@ -655,7 +658,7 @@ private:
         const std::size_t v = std::size_t(held[i]);
         const CoordType before = m_.vert[v].cP();
         for (int k = kSteps; k > reached[i]; --k) {
-          const Eigen::Vector3d candidate = rest(held[i]) + (double(k) / kSteps) * way[i];
+          const Eigen::Vector3d candidate = start[i] + (double(k) / kSteps) * way[i];
           if (!representable(candidate))
             break;
           m_.vert[v].P() = to_coord(candidate);
