@@ -631,9 +631,9 @@ private:
   }
 
   // The vertices held back to the scan or to the mean of their neighbours, each moved as far along the line from
-  // where it is to its projection as its faces allow without folding: 1, 15/16, ... 1/16 of the way, the first that
-  // folds no face. Sweeps again while one moved, as a neighbour's move can free another. Only a vertex's own faces can fold
-  // when it moves, so the mesh stays without folds.
+  // where it is to its projection as its faces allow without folding: 1, 15/16, ... 1/16 of the way, the first
+  // that folds no face. Sweeps again while one moved, as a neighbour's move can free another. Only a vertex's own
+  // faces can fold when it moves, so the mesh stays without folds.
   void go_partway()
   {
     // Finer steps and more sweeps than 8 and 4 took the 1M bracket scan on its true primitives from 97.2% to 97.6%
