@@ -502,7 +502,7 @@ private:
 
   // The vertex of face f to fall back: of those whose next step back unfolds f, the one that moves least;
   // when none does, the most snapped (edge/corner before single), then the most displaced.
-  int vertex_to_fall_back(std::size_t f) const
+  int vertex_to_fall_back(std::size_t f, std::vector<int>& groups) const
   {
     int chosen = -1, unfolding = -1;
     std::pair<int, double> chosen_key(-1, 0.0);
@@ -512,7 +512,7 @@ private:
       const std::size_t v = std::size_t(c[j]);
       if (stage_[v] == kAtRest)
         continue;
-      const FallBack step = next_fall_back(v);
+      const FallBack step = next_fall_back(v, groups);
       Eigen::Vector3d p[3] = {now(c[0]), now(c[1]), now(c[2])};
       p[j] = step.position;
       const double move = (step.position - now(int(v))).norm();
@@ -538,10 +538,10 @@ private:
 
   // One step back: edge/corner -> single projection of the original position; a single projection -> the mean
   // of the vertex's neighbours as they are now, projected onto its surface; then that mean itself -> original
-  // position. A vertex the repair slid goes straight back: it belongs to no snapped segment.
-  FallBack next_fall_back(std::size_t v) const
+  // position. A vertex the repair slid goes straight back: it belongs to no snapped segment. `groups` is scratch,
+  // the caller's, so that the walk over every folded face allocates nothing.
+  FallBack next_fall_back(std::size_t v, std::vector<int>& groups) const
   {
-    std::vector<int> groups;
     if (stage_[v] == kOnTarget && (kind_[v] == kEdge || kind_[v] == kCorner)) {
       gather(v, groups);
       const Eigen::Vector3d target = nearest_projection(groups, rest(int(v)));
@@ -571,9 +571,9 @@ private:
     return {kAtRest, to_eigen(original_[v])};
   }
 
-  void fall_back(std::size_t v)
+  void fall_back(std::size_t v, std::vector<int>& groups)
   {
-    const FallBack step = next_fall_back(v);
+    const FallBack step = next_fall_back(v, groups);
     stage_[v] = step.stage;
     m_.vert[v].P() = step.stage == kAtRest ? original_[v] : to_coord(step.position);
   }
@@ -586,14 +586,14 @@ private:
       if (face_vertex_[3 * f] >= 0)
         candidates.push_back(static_cast<int>(f));
     std::vector<std::uint8_t> reverted(nv, 0), drop(nv, 0);
-    std::vector<int> dropped;
+    std::vector<int> dropped, groups;
     std::vector<int> face_mark = huge_page_vector(nf, -1);
     for (int round = 0; !candidates.empty(); ++round) {
       dropped.clear();
       for (int f : candidates) {
         if (!face_is_bad(std::size_t(f)))
           continue;
-        const int chosen = vertex_to_fall_back(std::size_t(f));
+        const int chosen = vertex_to_fall_back(std::size_t(f), groups);
         if (chosen >= 0 && !drop[std::size_t(chosen)]) {
           drop[std::size_t(chosen)] = 1;
           dropped.push_back(chosen);
@@ -602,7 +602,7 @@ private:
       for (int vi : dropped) {
         drop[std::size_t(vi)] = 0;
         reverted[std::size_t(vi)] = 1;
-        fall_back(std::size_t(vi));
+        fall_back(std::size_t(vi), groups);
       }
       candidates.clear();
       for (int vi : dropped)
