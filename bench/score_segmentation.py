@@ -11,8 +11,11 @@ Each segment is matched to the B-rep face it overlaps most (by area); faces on t
 (`surface` in the reference JSON) count as one. Reported:
 - labelled: share of the area whose segment is matched to the face's true surface;
 - typed: share of the area whose segment's fitted type equals the true surface type;
-- the radius error of every cylinder of the reference that a fitted cylinder segment matches.
-Usage: score_segmentation.py SCAN.ply TRUTH.txt REFERENCE.json [FIT_EXPORT.json [AREA.ply]]
+- the radius error of every cylinder of the reference that a fitted cylinder segment matches;
+- with --surfaces, where the unlabelled area lies: per true surface that loses at least 0.2% of the area, its
+  type, its share of the area, the share lost (its area in segments matched to another surface) and the
+  segments holding most of it (segment -> the surface it is matched to: share of this surface).
+Usage: score_segmentation.py [--surfaces] SCAN.ply TRUTH.txt REFERENCE.json [FIT_EXPORT.json [AREA.ply]]
 """
 import json
 import math
@@ -65,6 +68,16 @@ def score(scan_ply, truth_txt, reference_json, fit_json=None, area_ply=None):
     labelled = sum(a for s, t, a in zip(segment, truth_face, area) if best[s][0] == surface_of[t]) / total
 
     result = {"faces": len(faces), "segments": len(best), "labelled": labelled}
+    area_of_surface = defaultdict(float)
+    for (s, surf), a in overlap.items():
+        area_of_surface[surf] += a
+    result["surfaces"] = [
+        {"surface": surf, "type": type_of[surf], "share": a / total,
+         "lost": (a - sum(o for (s, u), o in overlap.items() if u == surf and best[s][0] == surf)) / total,
+         "segments": sorted(((s, best[s][0], o / a) for (s, u), o in overlap.items() if u == surf),
+                            key=lambda row: -row[2])}
+        for surf, a in area_of_surface.items()]
+    result["surfaces"].sort(key=lambda row: -row["lost"])
     if fit_json:
         fits = {s["id"]: s for s in json.load(open(fit_json))["segments"]}
         fitted_type = {s: fits[s]["type"].lower() if s in fits else "freeform" for s in best}
@@ -85,10 +98,18 @@ def score(scan_ply, truth_txt, reference_json, fit_json=None, area_ply=None):
 
 
 def main():
-    if len(sys.argv) < 4:
+    args = [a for a in sys.argv[1:] if a != "--surfaces"]
+    if len(args) < 3 or len(args) > 5 or any(a.startswith("--") for a in args):
         raise SystemExit(__doc__)
-    r = score(*sys.argv[1:6])
+    r = score(*args)
     print("faces %d, segments %d, area labelled correctly %.1f%%" % (r["faces"], r["segments"], 100 * r["labelled"]))
+    if "--surfaces" in sys.argv[1:]:
+        for row in r["surfaces"]:
+            if row["lost"] < 0.002:
+                break
+            print("  surface %2d %-8s %4.1f%% of the area, %4.1f%% lost; in segments %s" % (
+                row["surface"], row["type"], 100 * row["share"], 100 * row["lost"],
+                ", ".join("%d->%d %.0f%%" % (s, matched, 100 * share) for s, matched, share in row["segments"][:3])))
     if "typed" in r:
         print("area with the right primitive type %.1f%%" % (100 * r["typed"]))
         for index, true_r, fitted in r["cylinders"]:
