@@ -366,10 +366,10 @@ void print_fit_all(const primitive_edit::FitAllSegmentsResult& result, int K, bo
     std::printf("\nprofiles about a cylinder's axis: %zu:", result.profiles.size());
     for (const SegmentProfile& q : result.profiles)
       std::printf(" %d %s about %d", q.segment, primitive_type_name(q.primitive.type), q.axis_segment);
-    std::printf("\nblends between planes: %zu:", result.blends.size());
+    std::printf("\nblends between planes or about an axis: %zu:", result.blends.size());
     for (const SegmentEdgeBlend& b : result.blends)
-      std::printf(" %s %d of (%d,%d) setback %.3f", b.form == BlendForm::Fillet ? "fillet" : "chamfer", b.segment,
-                  b.plane_a, b.plane_b, b.setback);
+      std::printf(" %s %d of (%d,%d%s) setback %.3f", b.form == BlendForm::Fillet ? "fillet" : "chamfer", b.segment,
+                  b.plane_a, b.plane_b, b.meridian ? ", about its axis" : "", b.setback);
     std::printf("\n");
   }
   const SnapReport& snap = *result.snap;

@@ -360,15 +360,16 @@ void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegments
         describe_primitive(r.profiles[i].primitive).c_str());
   if (r.blends.empty())
     return;
-  run.logf("%s: %d segments between two planes fitted as the fillet or chamfer tangent to both:", qUtf8Printable(name),
-      int(r.blends.size()));
+  run.logf("%s: %d segments between two planes, or a plane and a cylinder or cone turning about its normal, fitted "
+      "as the fillet or chamfer tangent to both:", qUtf8Printable(name), int(r.blends.size()));
   for (std::size_t i = 0; i < r.blends.size() && i < 100; ++i) {
     const SegmentEdgeBlend& b = r.blends[i];
+    const char* about = b.meridian ? " (about the axis of the second)" : "";
     if (b.form == BlendForm::Fillet)
-      run.logf("  segment %d: fillet of segments %d and %d, radius %.4g", b.segment, b.plane_a, b.plane_b,
-          b.primitive.radius);
+      run.logf("  segment %d: fillet of segments %d and %d%s, radius %.4g", b.segment, b.plane_a, b.plane_b, about,
+          b.primitive.type == PrimitiveType::Torus ? b.primitive.minor_radius : b.primitive.radius);
     else
-      run.logf("  segment %d: chamfer of segments %d and %d, %.4g from their edge", b.segment, b.plane_a, b.plane_b,
-          b.setback);
+      run.logf("  segment %d: chamfer of segments %d and %d%s, %.4g from their edge", b.segment, b.plane_a,
+          b.plane_b, about, b.setback);
   }
 }

@@ -9,8 +9,9 @@
 // check), then fit_edge_blends and fit_profiles_about_axes on the refitted primitives. Invariants: bad options are refused with the
 // primitives untouched; otherwise every relation joins two distinct segments that had a valid primitive, a
 // segment without one stays without, every relation kept holds after the refit, the refitted primitives are
-// valid, and held segments do not move; each fillet or chamfer lies between two planes that are no blends
-// (check_edge_blends); each profile about an axis lies on a cylinder segment's axis (check_profiles).
+// valid, and held segments do not move; each fillet or chamfer lies between two planes, or a plane and a
+// cylinder or cone it turns about, that are no blends (check_edge_blends); each profile about an axis lies on a
+// cylinder segment's axis (check_profiles).
 #include "common/relate/fit_edge_blends.h"
 #include "common/relate/fit_profiles_about_axes.h"
 #include "common/relate/relate_primitives.h"
@@ -90,8 +91,9 @@ void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>&
   for (auto& t : types)
     if (in.bit())
       t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
-  const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(primitives, samples, contacts, noise, in.special(0.1),
-                                                               types);
+  const double tolerance = in.special(0.1), axis_angle = in.special(10);
+  const std::vector<SegmentEdgeBlend> blends =
+      fit_edge_blends(primitives, samples, contacts, noise, tolerance, types, {}, axis_angle);
   std::vector<char> blend(std::size_t(count), 0);
   for (const SegmentEdgeBlend& b : blends) {
     FUZZ_CHECK(b.segment >= 0 && b.segment < count && !blend[std::size_t(b.segment)]);
@@ -100,11 +102,23 @@ void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>&
   for (const SegmentEdgeBlend& b : blends) {
     for (int p : {b.plane_a, b.plane_b}) {
       FUZZ_CHECK(p >= 0 && p < count && p != b.segment && !blend[std::size_t(p)] && primitives[std::size_t(p)]);
-      FUZZ_CHECK(primitives[std::size_t(p)]->type == PrimitiveType::Plane &&
-                 primitive_is_valid(*primitives[std::size_t(p)]));
+      FUZZ_CHECK(primitive_is_valid(*primitives[std::size_t(p)]));
     }
     FUZZ_CHECK(b.plane_a != b.plane_b && b.setback > 0 && std::isfinite(b.rms) && primitive_is_valid(b.primitive));
-    FUZZ_CHECK(b.primitive.type == (b.form == BlendForm::Fillet ? PrimitiveType::Cylinder : PrimitiveType::Plane));
+    FUZZ_CHECK(b.contact_a.allFinite() && b.contact_b.allFinite());
+    const PrimitiveType joined = primitives[std::size_t(b.plane_b)]->type;
+    FUZZ_CHECK(primitives[std::size_t(b.plane_a)]->type == PrimitiveType::Plane);
+    if (b.meridian) {
+      // About an axis: a plane and a cylinder or cone turning about its normal; a fillet is a torus, a chamfer a cone
+      // (or the cylinder or plane of a line parallel or square to the axis).
+      FUZZ_CHECK(axis_angle > 0 && (joined == PrimitiveType::Cylinder || joined == PrimitiveType::Cone));
+      FUZZ_CHECK(b.form == BlendForm::Fillet ? b.primitive.type == PrimitiveType::Torus
+                                             : b.primitive.type != PrimitiveType::Torus &&
+                                                   b.primitive.type != PrimitiveType::Sphere);
+    } else {
+      FUZZ_CHECK(joined == PrimitiveType::Plane);
+      FUZZ_CHECK(b.primitive.type == (b.form == BlendForm::Fillet ? PrimitiveType::Cylinder : PrimitiveType::Plane));
+    }
     if (std::size_t(b.segment) < types.size() && types[std::size_t(b.segment)])
       FUZZ_CHECK(*types[std::size_t(b.segment)] == b.primitive.type);
   }
@@ -179,6 +193,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     c.pairs = 1 + in.u8();
     c.point = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
     c.mean = in.bit() ? c.point : Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
+    c.points.resize(in.u8() % 4);
+    for (Eigen::Vector3d& p : c.points)
+      p = Eigen::Vector3d(in.special(2), in.special(2), in.special(2));
   }
   const double noise = in.special(0.05);
   RelationOptions options;

@@ -5,7 +5,9 @@
 //         face pairs across their border (about the border's length in edges) and a point of the border: of the
 //         pairs' centroid midpoints, the one nearest to their mean (the middle of a straight border; some
 //         point of a closed circular one, whose mean is its centre) and that mean (a straight border's mean
-//         distance from a line is the mean's). Sorted by (a, b). Two faces are a pair
+//         distance from a line is the mean's), and up to kContactPoints of those midpoints, evenly strided (a
+//         border about an axis, whose mean lies on the axis, has its radius and height in their own means; see
+//         meridian_section.h). Sorted by (a, b). Two faces are a pair
 //         as in face_adjacency.h: they share an edge (a non-manifold edge pairs all of its faces, a pair
 //         sharing two edges counts once; deleted faces, faces with an invalid vertex and an edge joining a
 //         vertex to itself pair nothing). Faces with non-finite coordinates take no part.
@@ -29,12 +31,15 @@
 
 namespace primitive_edit {
 
+constexpr int kContactPoints = 128;
+
 struct SegmentContact
 {
   int a = -1, b = -1;  // a < b
   int pairs = 0;       // face pairs across the border
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();  // of the pairs' centroid midpoints
+  std::vector<Eigen::Vector3d> points = {};        // up to kContactPoints of them, evenly strided
 };
 
 namespace contacts_detail {
@@ -129,6 +134,9 @@ std::vector<SegmentContact> segment_contacts(const MeshType& m, const std::vecto
         best = (std::get<2>(border[j]) - mean).squaredNorm();
         c.point = std::get<2>(border[j]);
       }
+    const std::size_t stride = (i - first + kContactPoints - 1) / kContactPoints;
+    for (std::size_t j = first; j < i; j += stride)
+      c.points.push_back(std::get<2>(border[j]));
     out.push_back(c);
   }
   return out;

@@ -77,11 +77,11 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
                  : 1.0;
     out.relations.push_back(r);
   }
-  // Fillets and chamfers, given the planes they join as the relations hold them; a fillet's relations are its
-  // tangencies.
+  // Fillets and chamfers, given the planes, cylinders and cones they join as the relations hold them; a fillet's
+  // relations are its tangencies.
   for (const SegmentEdgeBlend& b :
        fit_edge_blends(out.primitives, samples, contacts, out.roughness, options.tolerance, options.types,
-                       given_blends)) {
+                       given_blends, options.relation_options.angle_deg)) {
     if (!take_primitive(out, samples, b.segment, b.primitive))
       continue;
     out.blends.push_back(b);
@@ -91,14 +91,14 @@ Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamp
                        out.profiles.end());
     if (b.form != BlendForm::Fillet)
       continue;
-    for (int plane : {b.plane_a, b.plane_b}) {
-      const Primitive& q = *out.primitives[std::size_t(plane)];
+    for (int joined : {b.plane_a, b.plane_b}) {
+      const Primitive& q = *out.primitives[std::size_t(joined)];
       Relation r;
       r.kind = RelationKind::Tangent;
       r.a = b.segment;
-      r.b = plane;
-      r.sign = (b.primitive.origin - q.origin).dot(q.axis) < 0 ? -1.0 : 1.0;
-      r.contact = b.section.origin + b.setback * (plane == b.plane_a ? b.section.ray_a : b.section.ray_b);
+      r.b = joined;
+      r.contact = joined == b.plane_a ? b.contact_a : b.contact_b;
+      r.sign = project_onto_primitive(q, fillet_spine_point(b.primitive, r.contact)).signed_distance < 0 ? -1.0 : 1.0;
       out.relations.push_back(r);
     }
   }

@@ -8,6 +8,7 @@
 #include "common/relate/fit_edge_blends.h"
 
 #include "test_fit_data.h"
+#include "test_segment_samples.h"
 
 #include <gtest/gtest.h>
 
@@ -82,14 +83,6 @@ SegmentContact contact(int a, int b, double y, double z)
   return c;
 }
 
-std::optional<Primitive> own_fit(const SegmentSamples& s, double sigma)
-{
-  AutoFitOptions options;
-  options.roughness = sigma;
-  const AutoFitResult r = fit_primitive_auto(s.points, s.normals, s.weights, options);
-  return r.status.ok() ? std::optional<Primitive>(r.best.primitive) : std::nullopt;
-}
-
 const SegmentEdgeBlend* blend_of(const std::vector<SegmentEdgeBlend>& blends, int segment)
 {
   for (const SegmentEdgeBlend& b : blends)
@@ -116,7 +109,7 @@ TopEdge top_edge(BlendForm form, double s, double sigma)
   e.samples.push_back(form == BlendForm::Fillet ? quarter_circle(5, s, 2000, sigma, 3)
                                                 : strip({s, 5}, {0, 5 - s}, {-1, 1}, 2000, sigma, 3));
   e.primitives = {test_fit::make_plane({0, 0, 5}, {0, 0, 1}), test_fit::make_plane({0, 0, 0}, {0, -1, 0}),
-                  own_fit(e.samples[2], sigma)};
+                  test_segments::auto_fit_or_none(e.samples[2], sigma)};
   e.contacts = {contact(TopEdge::Top, TopEdge::Blend, s, 5), contact(TopEdge::Side, TopEdge::Blend, 0, 5 - s)};
   return e;
 }
@@ -206,7 +199,7 @@ TEST(EdgeBlends, ATiltedRoughChamferIsFoundByItsLikelihood)
   const Eigen::Vector2d across = Eigen::Vector2d(-1, 1).normalized();
   e.samples[TopEdge::Blend] =
       strip(Eigen::Vector2d(0.8, 5) - tilt * across, Eigen::Vector2d(0, 4.2) + tilt * across, {-1, 1}, 2000, sigma, 3);
-  e.primitives[TopEdge::Blend] = own_fit(e.samples[TopEdge::Blend], sigma);
+  e.primitives[TopEdge::Blend] = test_segments::auto_fit_or_none(e.samples[TopEdge::Blend], sigma);
   const std::vector<SegmentEdgeBlend> blends = fit_edge_blends(e.primitives, e.samples, e.contacts, sigma, 0.0);
   const SegmentEdgeBlend* b = blend_of(blends, TopEdge::Blend);
   ASSERT_TRUE(b);
@@ -227,7 +220,7 @@ TEST(EdgeBlends, ATiltedRoughChamferIsFoundByItsLikelihood)
   corner.weights.resize(2000);
   corner.weights << top.weights, side.weights;
   corner.area = top.area + side.area;
-  sharp.primitives[TopEdge::Blend] = own_fit(corner, sigma);
+  sharp.primitives[TopEdge::Blend] = test_segments::auto_fit_or_none(corner, sigma);
   EXPECT_TRUE(fit_edge_blends(sharp.primitives, sharp.samples, sharp.contacts, sigma, 0.0).empty());
 }
 
@@ -252,7 +245,7 @@ TEST(EdgeBlends, AnAsymmetricBevelStaysAsFitted)
 {
   TopEdge e = top_edge(BlendForm::Chamfer, 0.8, 0.02);
   e.samples[TopEdge::Blend] = strip({2.0, 5}, {0, 4.3}, {-1, 1}, 2000, 0.02, 3);
-  e.primitives[TopEdge::Blend] = own_fit(e.samples[TopEdge::Blend], 0.02);
+  e.primitives[TopEdge::Blend] = test_segments::auto_fit_or_none(e.samples[TopEdge::Blend], 0.02);
   e.contacts = {contact(TopEdge::Top, TopEdge::Blend, 2.0, 5), contact(TopEdge::Side, TopEdge::Blend, 0, 4.3)};
   EXPECT_TRUE(fit_edge_blends(e.primitives, e.samples, e.contacts, 0.02, 0.0).empty());
 }
@@ -272,7 +265,7 @@ TEST(EdgeBlends, AWallBetweenTwoBlendsStaysAPlane)
       test_fit::make_plane({0, 0, 5}, {0, 0, 1}),
       fit_primitive(PrimitiveType::Plane, samples[Fillet].points, samples[Fillet].normals, samples[Fillet].weights)
           .primitive,
-      test_fit::make_plane({0, 0, 0}, {0, -1, 0}), own_fit(samples[Chamfer], sigma),
+      test_fit::make_plane({0, 0, 0}, {0, -1, 0}), test_segments::auto_fit_or_none(samples[Chamfer], sigma),
       test_fit::make_plane({0, 0, 0}, {0, 0, -1})};
   const std::vector<SegmentContact> contacts = {contact(Top, Fillet, 1.5, 5), contact(Fillet, Wall, 0, 3.5),
                                                 contact(Wall, Chamfer, 0, 0.8), contact(Chamfer, Bottom, 0.8, 0)};

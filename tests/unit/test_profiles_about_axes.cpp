@@ -8,6 +8,8 @@
 #include "common/geometry/closest_point_on_primitive.h"
 #include "common/relate/fit_profiles_about_axes.h"
 
+#include "test_segment_samples.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,30 +26,7 @@ using namespace primitive_edit;
 const Eigen::Vector3d kAxisPoint(3, -2, 1);
 const Eigen::Vector3d kAxis = Eigen::Vector3d(0.1, -0.2, 1).normalized();
 
-// n points of the surface swept about (point, axis) by profile(u) = (r, h), u in [0, 1), with Gaussian noise of
-// sigma along the profile's normal (r, h) -> normal(u).
-SegmentSamples revolved(const Eigen::Vector3d& point, const Eigen::Vector3d& axis,
-                        const std::function<Eigen::Vector2d(double)>& profile,
-                        const std::function<Eigen::Vector2d(double)>& normal, int n, double sigma, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  std::normal_distribution<double> N(0.0, 1.0);
-  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
-  SegmentSamples s;
-  s.points.resize(n, 3);
-  s.normals.resize(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double u = U(rng), phi = 2 * kPi * U(rng), e = sigma * N(rng);
-    const Eigen::Vector2d rh = profile(u) + e * normal(u);
-    const Eigen::Vector3d radial = std::cos(phi) * e1 + std::sin(phi) * e2;
-    s.points.row(i) = (point + rh.y() * axis + rh.x() * radial).transpose();
-    s.normals.row(i) = (normal(u).x() * radial + normal(u).y() * axis).transpose();
-  }
-  s.area = 1;
-  s.weights = Eigen::VectorXd::Constant(n, 1.0 / n);
-  return s;
-}
+using test_segments::revolved;
 
 // The torus band of tube radius `tube` whose tube centre stands at (r0, h0) of the meridian, from angle a0 to a1
 // (0: facing outwards, pi/2: upwards).
