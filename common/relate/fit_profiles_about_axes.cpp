@@ -6,6 +6,8 @@
 #include "common/fit/fit_profile_about_axis.h"
 #include "common/fit/score_own_fit.h"
 #include "common/geometry/closest_point_on_primitive.h"
+#include "common/geometry/meridian_section.h"
+#include "common/geometry/sagitta.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,11 +89,17 @@ std::vector<SegmentProfile> fit_profiles_about_axes(const std::vector<std::optio
       const Primitive& c = *primitives[std::size_t(a)];
       if (a == s || !turns_about(*mine, c, centroid, cos_angle, distance))
         continue;
+      const std::optional<MeridianFrame> frame = meridian_frame(c.origin, c.axis, centroid);
+      const double chord = frame ? meridian_extent(*frame, sample.points, sample.weights) : 0.0;
       for (PrimitiveType type : {PrimitiveType::Cone, PrimitiveType::Sphere, PrimitiveType::Torus}) {
         if (typed && asked != type)
           continue;
         const std::optional<Primitive> q = profile_about(sample, c, type, own->cap);
         if (!q)
+          continue;
+        // A sphere whose meridian arc sags less than the tolerance over the band is the cone of its chord, as a free
+        // fit's sphere that sags less is a plane (fit_primitive_auto.h).
+        if (!typed && type == PrimitiveType::Sphere && !(sagitta(q->radius, chord) > own->cap))
           continue;
         const double rms = capped_rms_to(sample, own->cap, *q);
         if (!(rms <= std::min(own->cap, kProfileRmsRatio * own->rms)))

@@ -19,12 +19,19 @@
 //         - its RMS is within the tolerance and at most kProfileRmsRatio times that of the segment's own
 //           primitive, both capped_rms.h over at most kProfilePoints samples (the shared axis must not buy a
 //           worse fit), and
-//         - its score is below the own primitive's (type_score with all its parameters).
+//         - its score is below the own primitive's (type_score with all its parameters), and
+//         - for a sphere, its meridian arc sags more than the tolerance over the band (sagitta.h over the band's
+//           extent in radius and height), as a free fit's sphere must over its data (fit_primitive_auto.h): a
+//           shallower arc is no evidence of a sphere on a rough scan, and the band is the cone of its chord. On the
+//           bundled scan's true segments the boss's drafted cone (half-angle 4.8 degrees) came out a sphere of radius
+//           8.7 about the bore's axis, its arc sagging 0.44 over the band for a tolerance of 0.96, and then no fillet
+//           could be tangent to it (fit_edge_blends.h).
 //         Of several axes, the best score wins. Not a cylinder: a free cylinder already lost to the segment's
 //         own type, and with the axis given its one parameter takes any band about it (the 1M scan's automatic
 //         boss segment, a cone between two fillets: 82.9% within 0.42 mm as a cylinder, 83.6% as a sphere
 //         about the bore's axis). Cylinders are the axes; coaxial ones are the joint refit's (relate_primitives.h).
-// Cost:   O(segments x cylinders) to pair them, then per pair O(kProfilePoints x kProfileIterations) for each type.
+// Cost:   O(segments x cylinders) to pair them, then per pair O(kProfilePoints) for the band's extent and
+//         O(kProfilePoints x kProfileIterations) for each type.
 #ifndef PRIMITIVE_EDIT_FIT_PROFILES_ABOUT_AXES_H
 #define PRIMITIVE_EDIT_FIT_PROFILES_ABOUT_AXES_H
 

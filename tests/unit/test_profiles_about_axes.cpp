@@ -243,6 +243,35 @@ TEST(FitProfilesAboutAxes, TheTypeAskedIsKeptAndAnExactTorusStaysExact)
     EXPECT_LT(max_distance(q.primitive, exact.samples[1]), 1e-9);
 }
 
+// On a rough scan (noise 0.2, the tolerance 3 x that) a band of a boss fits a sphere about the axis a little better
+// than a cone, as the bracket scan's boss did; but its arc sags 0.38 over the band, less than the tolerance, which
+// is no evidence of a sphere, so the band is the cone of its chord. A band of a sphere whose arc sags 0.8 over it
+// stays a sphere.
+TEST(FitProfilesAboutAxes, ASphereThatSagsLessThanTheToleranceIsTheConeOfItsChord)
+{
+  const double sigma = 0.2;
+  auto profiles_of = [&](const SegmentSamples& band) {
+    Boss b;
+    b.samples = {bore(sigma, 21), band};
+    b.primitives = {cylinder(kAxisPoint, kAxis, 4), std::nullopt};
+    const FitResult sphere = fit_primitive(PrimitiveType::Sphere, band.points, band.normals, band.weights);
+    EXPECT_TRUE(sphere.status.ok());
+    b.primitives[1] = sphere.primitive;
+    return fit_profiles_about_axes(b.primitives, b.samples, sigma, 0, 10, 3 * sigma);
+  };
+  // The sphere of radius 8.5 about the axis from h = -2.5 to 2.5: r from 8.12 to 8.5.
+  const double a = std::asin(2.5 / 8.5);
+  const std::vector<SegmentProfile> flat =
+      profiles_of(torus_band(kAxisPoint, kAxis, 0, 0, 8.5, -a, a, 3000, sigma, 22));
+  ASSERT_EQ(flat.size(), 1u);
+  EXPECT_EQ(flat[0].primitive.type, PrimitiveType::Cone);
+  // The sphere of radius 6 about the axis from its equator up 60 degrees: r from 6 to 3 over h from 0 to 5.2.
+  const std::vector<SegmentProfile> round =
+      profiles_of(torus_band(kAxisPoint + 2 * kAxis, kAxis, 0, 0, 6, 0, kPi / 3, 3000, sigma, 23));
+  ASSERT_EQ(round.size(), 1u);
+  EXPECT_EQ(round[0].primitive.type, PrimitiveType::Sphere);
+}
+
 TEST(FitProfilesAboutAxes, BrokenInputGivesNothing)
 {
   Boss b = boss(kAxisPoint, kAxis, 0.1);
