@@ -1,5 +1,6 @@
 #include "common/relate/fit_edge_blends.h"
 
+#include "common/base/constants.h"
 #include "common/fit/capped_rms.h"
 #include "common/fit/fit_primitive_auto.h"
 #include "common/fit/score_own_fit.h"
@@ -7,7 +8,6 @@
 #include "common/geometry/edge_blend_likelihood.h"
 #include "common/geometry/edge_blend_window.h"
 #include "common/geometry/meridian_section.h"
-#include "common/base/constants.h"
 
 #include <algorithm>
 #include <cmath>
