@@ -74,6 +74,9 @@ std::vector<SegmentContact> contacts_by_adjacency(const M& m, const std::vector<
         best = (p - mean).squaredNorm();
         c.point = p;
       }
+    const std::size_t stride = (mid.size() + kContactPoints - 1) / kContactPoints;
+    for (std::size_t j = 0; j < mid.size(); j += stride)
+      c.points.push_back(mid[j]);
     out.push_back(c);
   }
   return out;
@@ -114,6 +117,32 @@ TYPED_TEST(SegmentContactsTest, QuartersOfAGridTouchAlongTheirCommonEdges)
   }
 }
 
+// A long border keeps at most kContactPoints of its midpoints, evenly strided along it: all on the border, spread
+// over its length.
+TYPED_TEST(SegmentContactsTest, ALongBorderKeepsEvenlyStridedPointsOfIt)
+{
+  TypeParam m;
+  const int n = 300;
+  make_grid(m, n);
+  std::vector<int> segment_of_face(m.face.size());
+  for (std::size_t f = 0; f < m.face.size(); ++f)
+    segment_of_face[f] = int(f / 2) % n < n / 2 ? 0 : 1;
+  const std::vector<SegmentContact> contacts = segment_contacts(m, segment_of_face);
+  ASSERT_EQ(contacts.size(), 1u);
+  const SegmentContact& c = contacts[0];
+  EXPECT_EQ(c.pairs, n);
+  ASSERT_GE(c.points.size(), std::size_t(kContactPoints) / 2);
+  ASSERT_LE(c.points.size(), std::size_t(kContactPoints));
+  double lo = n, hi = 0;
+  for (const Eigen::Vector3d& p : c.points) {
+    EXPECT_LT(std::abs(p.x() - n / 2), 1.0);
+    lo = std::min(lo, p.y());
+    hi = std::max(hi, p.y());
+  }
+  EXPECT_LT(lo, 0.05 * n);
+  EXPECT_GT(hi, 0.95 * n);
+}
+
 TYPED_TEST(SegmentContactsTest, FindsTheFacePairsOfTheFaceAdjacency)
 {
   TypeParam m;
@@ -150,6 +179,7 @@ TYPED_TEST(SegmentContactsTest, FindsTheFacePairsOfTheFaceAdjacency)
       EXPECT_EQ(got[k].pairs, want[k].pairs) << "trial " << trial << ", contact " << k;
       EXPECT_EQ(got[k].point, want[k].point) << "trial " << trial << ", contact " << k;
       EXPECT_LT((got[k].mean - want[k].mean).norm(), 1e-9) << "trial " << trial << ", contact " << k;
+      EXPECT_EQ(got[k].points, want[k].points) << "trial " << trial << ", contact " << k;
     }
   }
 }
