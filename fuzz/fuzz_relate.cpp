@@ -10,8 +10,9 @@
 // primitives untouched; otherwise every relation joins two distinct segments that had a valid primitive, a
 // segment without one stays without, every relation kept holds after the refit, the refitted primitives are
 // valid, and held segments do not move; each fillet or chamfer lies between two planes, or a plane and a
-// cylinder or cone it turns about, that are no blends (check_edge_blends); each profile about an axis lies on a
-// cylinder segment's axis (check_profiles).
+// cylinder or cone it turns about, that are no blends (check_edge_blends, and on a decoded boss's foot,
+// check_blends_about_axis); each profile about an axis lies on a cylinder segment's axis (check_profiles).
+#include "common/fit/fit_primitive.h"
 #include "common/relate/fit_edge_blends.h"
 #include "common/relate/fit_profiles_about_axes.h"
 #include "common/relate/relate_primitives.h"
@@ -19,6 +20,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <optional>
 
 using namespace primitive_edit;
@@ -80,20 +82,13 @@ bool same(const Primitive& a, const Primitive& b)
          bits(a.half_angle, b.half_angle);
 }
 
-// Fillets and chamfers between the refitted planes: each blend is a distinct segment between two distinct valid
-// planes that are no blends, of the form the type asked allows, valid, with a finite RMS and a positive setback.
-void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>& primitives,
-                       const std::vector<SegmentSamples>& samples, const std::vector<SegmentContact>& contacts,
-                       double noise)
+// Each blend is a distinct segment between two distinct valid segments that are no blends, a plane and a plane or,
+// about an axis, a cylinder or cone; of the form the type asked allows, valid, with a finite RMS, a positive setback
+// and finite contacts.
+void check_blends(const std::vector<SegmentEdgeBlend>& blends, const std::vector<std::optional<Primitive>>& primitives,
+                  const std::vector<std::optional<PrimitiveType>>& types, double axis_angle)
 {
   const int count = int(primitives.size());
-  std::vector<std::optional<PrimitiveType>> types(in.u8() % (count + 1));
-  for (auto& t : types)
-    if (in.bit())
-      t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
-  const double tolerance = in.special(0.1), axis_angle = in.special(10);
-  const std::vector<SegmentEdgeBlend> blends =
-      fit_edge_blends(primitives, samples, contacts, noise, tolerance, types, {}, axis_angle);
   std::vector<char> blend(std::size_t(count), 0);
   for (const SegmentEdgeBlend& b : blends) {
     FUZZ_CHECK(b.segment >= 0 && b.segment < count && !blend[std::size_t(b.segment)]);
@@ -122,6 +117,114 @@ void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>&
     if (std::size_t(b.segment) < types.size() && types[std::size_t(b.segment)])
       FUZZ_CHECK(*types[std::size_t(b.segment)] == b.primitive.type);
   }
+}
+
+std::vector<std::optional<PrimitiveType>> decode_types(Decoder& in, int count)
+{
+  std::vector<std::optional<PrimitiveType>> types(in.u8() % (count + 1));
+  for (auto& t : types)
+    if (in.bit())
+      t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+  return types;
+}
+
+// Fillets and chamfers between the refitted segments, with decoded types, tolerance and axis angle (check_blends).
+void check_edge_blends(Decoder& in, const std::vector<std::optional<Primitive>>& primitives,
+                       const std::vector<SegmentSamples>& samples, const std::vector<SegmentContact>& contacts,
+                       double noise)
+{
+  const std::vector<std::optional<PrimitiveType>> types = decode_types(in, int(primitives.size()));
+  const double tolerance = in.special(0.1), axis_angle = in.special(10);
+  check_blends(fit_edge_blends(primitives, samples, contacts, noise, tolerance, types, {}, axis_angle), primitives,
+               types, axis_angle);
+}
+
+// A boss's foot, as random parts seldom pair a plane with a cylinder about its normal: a plane (tilted up to 0.2
+// radians from the axis), a cylinder or cone about the axis, and a fillet or chamfer band between them, each
+// sampled from its meridian profile with decoded noise (special values too); the band's primitive decoded (none, any,
+// a sphere fitted to it), its borders rings of points (or none) whose means lie on the axis. check_blends on what
+// fit_edge_blends makes of it.
+void check_blends_about_axis(Decoder& in)
+{
+  static constexpr double kSizes[] = {0.5, 1.0, 2.0, 4.0, 8.0};
+  const Eigen::Vector3d axis = frame_direction(in);
+  const Eigen::Vector3d centre(int(in.u8() % 5) - 2, int(in.u8() % 5) - 2, int(in.u8() % 5) - 2);
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  const double radius = kSizes[in.u8() % 5], setback = 0.5 * kSizes[in.u8() % 5];
+  const bool fillet = !in.bit(), cone = in.bit();
+  const double draft = cone ? 0.05 + 0.5 * in.unit() : 0.0;  // the turned surface's half-angle, widening downwards
+  const double noise = in.bit() ? in.special(0.05) : 0.05 * in.unit();
+  // (r, h) of the profile: the plane h = 0 for r >= radius + setback, the turned surface from (radius, setback) up.
+  auto at = [&](double r, double h, double phi) {
+    return Eigen::Vector3d(centre + h * axis + r * (std::cos(phi) * e1 + std::sin(phi) * e2));
+  };
+  auto sampled = [&](const std::function<Eigen::Vector2d(double)>& profile, int n) {
+    SegmentSamples ss;
+    ss.points.resize(n, 3);
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d rh = profile(in.unit());
+      ss.points.row(i) = at(rh.x() + noise * in.signed_unit(), rh.y() + noise * in.signed_unit(), 2 * kPi * in.unit())
+                             .transpose();
+    }
+    ss.normals = Eigen::MatrixX3d::Zero(n, 3);
+    ss.weights = Eigen::VectorXd::Ones(n);
+    ss.area = n;
+    return ss;
+  };
+  const double r0 = radius + setback;
+  const Eigen::Vector2d on_plane(r0, 0), on_turned(radius, setback);
+  std::vector<SegmentSamples> samples;
+  samples.push_back(sampled([&](double u) { return Eigen::Vector2d(r0 + 5 * u, 0); }, 60));
+  samples.push_back(
+      sampled([&](double u) { return Eigen::Vector2d(radius - std::tan(draft) * 5 * u, setback + 5 * u); }, 60));
+  samples.push_back(sampled(
+      [&](double u) -> Eigen::Vector2d {
+        if (!fillet)
+          return on_plane + u * (on_turned - on_plane);
+        const double a = u * kPi / 2;
+        return Eigen::Vector2d(r0, setback) - setback * Eigen::Vector2d(std::sin(a), std::cos(a));
+      },
+      int(20 + in.u8() % 100)));
+  const double tilt = 0.2 * in.unit();
+  Primitive plane;
+  plane.type = PrimitiveType::Plane;
+  plane.origin = centre;
+  plane.axis = (std::cos(tilt) * axis + std::sin(tilt) * e1).normalized();
+  Primitive turned;
+  turned.type = cone ? PrimitiveType::Cone : PrimitiveType::Cylinder;
+  turned.axis = cone ? Eigen::Vector3d(-axis) : axis;
+  turned.origin = cone ? centre + (setback + radius / std::tan(draft)) * axis : centre;
+  turned.radius = radius;
+  turned.half_angle = draft;
+  std::optional<Primitive> own;
+  switch (in.u8() % 3) {
+  case 0: break;
+  case 1: own = fuzz_primitive(in); break;
+  default: {
+    const SegmentSamples& band = samples[2];
+    const FitResult sphere = fit_primitive(PrimitiveType::Sphere, band.points, band.normals, band.weights);
+    if (sphere.status.ok())
+      own = sphere.primitive;
+  }
+  }
+  const std::vector<std::optional<Primitive>> primitives{plane, turned, own};
+  auto ring = [&](int a, const Eigen::Vector2d& rh) {
+    SegmentContact c;
+    c.a = a;
+    c.b = 2;
+    c.pairs = 64;
+    c.mean = centre + rh.y() * axis;
+    c.point = at(rh.x(), rh.y(), 0);
+    if (in.bit())
+      for (int k = 0; k < 16; ++k)
+        c.points.push_back(at(rh.x() + noise * in.signed_unit(), rh.y() + noise * in.signed_unit(), 2 * kPi * k / 16));
+    return c;
+  };
+  const std::vector<SegmentContact> contacts{ring(0, on_plane), ring(1, on_turned)};
+  const std::vector<std::optional<PrimitiveType>> types = decode_types(in, 3);
+  const double tolerance = in.bit() ? in.special(0.1) : 0.0, axis_angle = in.bit() ? in.special(10) : 10.0;
+  check_blends(fit_edge_blends(primitives, samples, contacts, noise, tolerance, types, {}, axis_angle), primitives,
+               types, axis_angle);
 }
 
 // fit_profiles_about_axes on the refitted primitives, with decoded types, tolerance, angle and distance: each
@@ -251,5 +354,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   check_edge_blends(in, r.primitives, samples, contacts, noise);
   check_profiles(in, r.primitives, samples, noise);
+  check_blends_about_axis(in);
   return 0;
 }
