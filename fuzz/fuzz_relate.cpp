@@ -234,10 +234,7 @@ void check_profiles(Decoder& in, const std::vector<std::optional<Primitive>>& pr
                     const std::vector<SegmentSamples>& samples, double noise)
 {
   const int count = int(primitives.size());
-  std::vector<std::optional<PrimitiveType>> types(in.u8() % (count + 1));
-  for (auto& t : types)
-    if (in.bit())
-      t = static_cast<PrimitiveType>(in.u8() % kPrimitiveTypeCount);
+  const std::vector<std::optional<PrimitiveType>> types = decode_types(in, count);
   const double tolerance = in.special(0.1), angle = in.special(10), distance = in.special(0.5);
   const std::vector<SegmentProfile> profiles =
       fit_profiles_about_axes(primitives, samples, noise, tolerance, angle, distance, types);

@@ -126,10 +126,17 @@ Eigen::Vector3d meridian_mean(const MeridianFrame& frame, const SegmentContact& 
   return sum / double(c.points.size());
 }
 
+// A blend about an axis and its two neighbours as the lines of its meridian space, where its gain is measured.
+struct MeridianBlend
+{
+  SegmentEdgeBlend blend;
+  Primitive level, line;
+};
+
 // Segment s's blend of plane a and the cylinder or cone t turning about a's normal (within axis_angle_deg), made in
 // their meridian space and turned back about t's axis; std::nullopt when there is none or it is of a type other
 // than the one asked.
-std::optional<SegmentEdgeBlend> blend_about_axis(int s, const SegmentContact& with_plane,
+std::optional<MeridianBlend> blend_about_axis(int s, const SegmentContact& with_plane,
                                                  const SegmentContact& with_turned,
                                                  const std::vector<std::optional<Primitive>>& primitives,
                                                  const OwnFitScore& own, double axis_angle_deg,
@@ -164,7 +171,7 @@ std::optional<SegmentEdgeBlend> blend_about_axis(int s, const SegmentContact& wi
   blend->meridian = frame;
   blend->contact_a = from_meridian(*frame, blend->contact_a);
   blend->contact_b = from_meridian(*frame, blend->contact_b);
-  return blend;
+  return MeridianBlend{*blend, *level, *line};
 }
 
 // The best-scoring blend of segment s between any two of the planes it touches, or a plane and a cylinder or cone
@@ -211,17 +218,17 @@ std::optional<SegmentEdgeBlend> best_blend_of(int s, const std::vector<std::opti
     }
     if (!(axis_angle_deg > 0))
       continue;
-    for (const SegmentContact* with_turned : turned)
-      weigh(blend_about_axis(s, *planes[i], *with_turned, primitives, own, axis_angle_deg, type),
-            [&](const SegmentEdgeBlend& blend) {
-              const MeridianFrame& frame = *blend.meridian;
-              const std::optional<Primitive> level = meridian_of_plane(frame, pa, planes[i]->mean);
-              const std::optional<Primitive> line = meridian_of_turned(frame, *primitives[std::size_t(blend.plane_b)]);
-              return level && line ? blend_gain(blend, own_samples, samples[std::size_t(a)],
-                                                samples[std::size_t(blend.plane_b)], *level, *line, own.cap,
-                                                [&](const Eigen::Vector3d& p) { return to_meridian(frame, p); })
-                                   : 0.0;
-            });
+    for (const SegmentContact* with_turned : turned) {
+      const std::optional<MeridianBlend> m =
+          blend_about_axis(s, *planes[i], *with_turned, primitives, own, axis_angle_deg, type);
+      if (!m)
+        continue;
+      weigh(m->blend, [&](const SegmentEdgeBlend& blend) {
+        const MeridianFrame& frame = *blend.meridian;
+        return blend_gain(blend, own_samples, samples[std::size_t(a)], samples[std::size_t(blend.plane_b)], m->level,
+                          m->line, own.cap, [&](const Eigen::Vector3d& p) { return to_meridian(frame, p); });
+      });
+    }
   }
   return chosen ? chosen : likeliest;
 }
