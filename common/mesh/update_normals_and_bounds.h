@@ -11,9 +11,11 @@
 #ifndef PRIMITIVE_EDIT_UPDATE_NORMALS_AND_BOUNDS_H
 #define PRIMITIVE_EDIT_UPDATE_NORMALS_AND_BOUNDS_H
 
+// vcg's algorithm headers need its mesh types declared first.
+#include <vcg/complex/complex.h>
+
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
-#include <vcg/complex/complex.h>
 
 namespace primitive_edit {
 
