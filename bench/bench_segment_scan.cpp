@@ -363,6 +363,9 @@ void print_fit_all(const primitive_edit::FitAllSegmentsResult& result, int K, bo
                 result.relation_seconds);
     for (const Relation& r : result.relations)
       std::printf(" %s(%d,%d)", relation_kind_name(r.kind), r.a, r.b);
+    std::printf("\nprofiles about a direction of the part: %zu:", result.profiles_about_directions.size());
+    for (const SegmentProfile& q : result.profiles_about_directions)
+      std::printf(" %d %s along %d", q.segment, primitive_type_name(q.primitive.type), q.axis_segment);
     std::printf("\nprofiles about a cylinder's axis: %zu:", result.profiles.size());
     for (const SegmentProfile& q : result.profiles)
       std::printf(" %d %s about %d", q.segment, primitive_type_name(q.primitive.type), q.axis_segment);

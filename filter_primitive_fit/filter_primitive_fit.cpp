@@ -352,6 +352,12 @@ void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegments
       r.relations_dropped, 1000 * r.relation_seconds);
   for (std::size_t i = 0; i < r.relations.size() && i < 100; ++i)
     run.logf("  relation: %s", describe_relation(r.relations[i], r.primitives).c_str());
+  if (!r.profiles_about_directions.empty())
+    run.logf("%s: %d curved segments whose axis followed none of the part's directions fitted about one:",
+        qUtf8Printable(name), int(r.profiles_about_directions.size()));
+  for (std::size_t i = 0; i < r.profiles_about_directions.size() && i < 100; ++i)
+    run.logf("  segment %d, along the normal of segment %d: %s", r.profiles_about_directions[i].segment,
+        r.profiles_about_directions[i].axis_segment, describe_primitive(r.profiles_about_directions[i].primitive).c_str());
   if (!r.profiles.empty())
     run.logf("%s: %d segments turning about a cylinder segment's axis fitted about it:", qUtf8Printable(name),
         int(r.profiles.size()));

@@ -8,10 +8,11 @@
 //         knows it, and a Progress.
 // Output: FitAllSegmentsResult: per segment its FitResult (a failed status: free-form, and why), point count
 //         and area (after the relations' refit, with its RMS and maximum residual there); the primitives (empty
-//         where free-form); with relations on, the relations kept (a segment refitted about a cylinder's axis
-//         then has its coaxiality instead, a fillet found between planes its tangencies), how many the check
-//         dropped, the segments refitted about a cylinder segment's axis and those given a fillet or chamfer
-//         between two planes; the estimated roughness, counts per type, the fitted share of the area, the
+//         where free-form); with relations on, the relations kept (a segment refitted about one of the part's
+//         directions then is parallel to its plane, one refitted about a cylinder's axis has its coaxiality
+//         instead, a fillet found between planes its tangencies), how many the check dropped, the segments
+//         refitted about a direction, those refitted about a cylinder segment's axis and those given a fillet or
+//         chamfer between two planes; the estimated roughness, counts per type, the fitted share of the area, the
 //         SnapReport and the time of each stage. With snap, the mesh's vertices lie on the primitives, the primitives are
 //         recorded on the mesh (segment_primitive_attribute.h) so that a later Snap Segment keeps sharp edges
 //         against them, and normals and bounding box are updated.
@@ -19,7 +20,8 @@
 //         or not finite, or relate_primitives refuses its input (bad relation options).
 // Method: surface_roughness (options.roughness, or kept on the mesh by the segmentation, else estimated;
 //         automatic tolerance or relations), gather_segment_samples, fit_segments and relate_primitives (both
-//         on options.threads; segment_contacts for the tangencies), fit_profiles_about_axes, fit_edge_blends
+//         on options.threads; segment_contacts for the tangencies), fit_profiles_about_directions,
+//         fit_profiles_about_axes, fit_edge_blends
 //         (with the same contacts, and the blends the segmentation kept on the mesh, segment_blends_attribute.h),
 //         snap_segments (its fold repair on options.threads too).
 // Cost:   O(F + V) for roughness and samples, the fits' cost divided by the threads, and snap_segments.
@@ -38,6 +40,7 @@
 #include "common/pipeline/fit_segments.h"
 #include "common/relate/fit_edge_blends.h"
 #include "common/relate/fit_profiles_about_axes.h"
+#include "common/relate/fit_profiles_about_directions.h"
 #include "common/relate/relate_primitives.h"
 #include "common/snap/snap_segments.h"
 
@@ -78,6 +81,9 @@ struct FitAllSegmentsResult
   int relations_dropped = 0;        // found, then dropped by the check after the refit
   double part_size = 0;             // the relations' length scale (RelatedPrimitives::length); 0 without them
   std::vector<SegmentProfile> profiles;   // segments given their profile about a cylinder segment's axis
+  // Segments given their plane, cylinder, cone or torus about one of the part's directions (axis_segment: the plane
+  // whose normal it follows).
+  std::vector<SegmentProfile> profiles_about_directions;
   std::vector<SegmentEdgeBlend> blends;  // segments given a fillet or chamfer between two planes
   std::optional<SnapReport> snap;
   double fit_seconds = 0, relation_seconds = 0, snap_seconds = 0;  // roughness, samples and fits; relations; snapping
@@ -91,8 +97,9 @@ namespace fit_all_detail {
 // it), and keeps the counts; false, with nothing changed, when p cannot be measured on the samples.
 bool take_primitive(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples, int s, const Primitive& p);
 
-// The relations and the joint refit (relate_primitives), then the profiles about the cylinders' axes
-// (fit_profiles_about_axes, each replacing its segment's relations by its coaxiality) and the fillets and
+// The relations and the joint refit (relate_primitives), then the profiles about the part's directions
+// (fit_profiles_about_directions, each replacing its segment's relations by its parallelism to the plane it
+// follows), those about the cylinders' axes (fit_profiles_about_axes, by its coaxiality) and the fillets and
 // chamfers between planes (fit_edge_blends; a fillet's relations are its tangencies, a chamfer has none). A failed
 // status when relate_primitives refuses.
 Status relate_and_blend(FitAllSegmentsResult& out, const std::vector<SegmentSamples>& samples,

@@ -26,6 +26,7 @@ using namespace primitive_edit;
 const Eigen::Vector3d kAxisPoint(3, -2, 1);
 const Eigen::Vector3d kAxis = Eigen::Vector3d(0.1, -0.2, 1).normalized();
 
+using test_segments::max_distance;
 using test_segments::revolved;
 
 // The torus band of tube radius `tube` whose tube centre stands at (r0, h0) of the meridian, from angle a0 to a1
@@ -57,19 +58,7 @@ Primitive cylinder(const Eigen::Vector3d& point, const Eigen::Vector3d& axis, do
   return p;
 }
 
-double max_distance(const Primitive& p, const SegmentSamples& s)
-{
-  double worst = 0;
-  for (Eigen::Index i = 0; i < s.points.rows(); ++i)
-    worst = std::max(worst, std::abs(project_onto_primitive(p, s.points.row(i).transpose()).signed_distance));
-  return worst;
-}
-
-double off_axis(const Eigen::Vector3d& x)
-{
-  const Eigen::Vector3d d = x - kAxisPoint;
-  return (d - d.dot(kAxis) * kAxis).norm();
-}
+double off_axis(const Eigen::Vector3d& x) { return test_segments::distance_from_axis(x, kAxisPoint, kAxis); }
 
 TEST(FitProfileAboutAxis, ExactSurfacesOfRevolutionAreRecovered)
 {
