@@ -5,19 +5,23 @@
 // values), so that relations are found and the refit runs; each segment gets up to 120 points of a patch of
 // its primitive with noise and special values, and a "fitted" primitive: its own, slightly tilted and moved, or
 // a decoded one (valid or not), or none. Contacts between segments, the noise, the options and the fixed
-// segments are decoded too. Entry point: relate_primitives (direction and position detection, the refits, the
-// check), then fit_edge_blends and fit_profiles_about_axes on the refitted primitives. Invariants: bad options are refused with the
-// primitives untouched; otherwise every relation joins two distinct segments that had a valid primitive, a
-// segment without one stays without, every relation kept holds after the refit, the refitted primitives are
-// valid, and held segments do not move; each fillet or chamfer lies between two planes, or a plane and a
-// cylinder or cone it turns about, that are no blends (check_edge_blends, and on a decoded boss's foot,
-// check_blends_about_axis); each profile about an axis lies on a cylinder segment's axis (check_profiles).
+// segments are decoded too. Entry point: relate_primitives (direction and position detection, the refits, the check),
+// then fit_edge_blends, fit_profiles_about_axes and fit_profiles_about_directions on the refitted primitives.
+// Invariants: bad options are refused with the primitives untouched; otherwise every relation joins two distinct
+// segments that had a valid primitive, a segment without one stays without, every relation kept holds after the refit,
+// the refitted primitives are valid, and held segments do not move; each fillet or chamfer lies between two planes, or
+// a plane and a cylinder or cone it turns about, that are no blends (check_edge_blends, and on a decoded boss's foot,
+// check_blends_about_axis); each profile about an axis lies on a cylinder segment's axis (check_profiles), each about a
+// direction along a large plane's normal (check_profiles_about_directions).
 #include "common/fit/fit_primitive.h"
 #include "common/relate/fit_edge_blends.h"
 #include "common/relate/fit_profiles_about_axes.h"
+#include "common/relate/fit_profiles_about_directions.h"
 #include "common/relate/relate_primitives.h"
 #include "fuzz/fuzz_input.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -263,6 +267,52 @@ void check_profiles(Decoder& in, const std::vector<std::optional<Primitive>>& pr
 
 } // namespace
 
+// part_directions and fit_profiles_about_directions on the refitted primitives, with decoded types, tolerance and
+// angle: each direction is a distinct plane segment's unit normal, no two within the angle; each profile is a
+// distinct segment that had a valid cylinder, cone or torus whose axis lies beyond the angle from every direction,
+// now a valid plane, cylinder, cone or ring torus (the type asked, if any) along a direction's plane's normal.
+void check_profiles_about_directions(Decoder& in, const std::vector<std::optional<Primitive>>& primitives,
+                                     const std::vector<SegmentSamples>& samples, double noise)
+{
+  const int count = int(primitives.size());
+  std::vector<double> area;  // a point per unit of area: the decoded parts' samples have none
+  for (const SegmentSamples& s : samples)
+    area.push_back(double(s.points.rows()));
+  const std::vector<std::optional<PrimitiveType>> types = decode_types(in, count);
+  const double tolerance = in.bit() ? in.special(0.1) : 0.0, angle = in.bit() ? in.special(10) : 10.0;
+  const std::vector<PartDirection> directions = part_directions(primitives, area, angle);
+  const double cos_angle = angle >= 0 && angle < 90 ? std::cos(radians_from_degrees(angle)) : 1.0;
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const PartDirection& d = directions[i];
+    FUZZ_CHECK(d.segment >= 0 && d.segment < count && primitives[std::size_t(d.segment)] &&
+               primitives[std::size_t(d.segment)]->type == PrimitiveType::Plane);
+    FUZZ_CHECK(std::abs(d.direction.norm() - 1) <= 1e-9);
+    for (std::size_t j = 0; j < i; ++j)
+      FUZZ_CHECK(directions[j].segment != d.segment && std::abs(directions[j].direction.dot(d.direction)) < cos_angle);
+  }
+  const std::vector<SegmentProfile> profiles =
+      fit_profiles_about_directions(primitives, samples, noise, tolerance, directions, angle, types, 1 + in.bit());
+  std::vector<char> seen(std::size_t(count), 0);
+  for (const SegmentProfile& q : profiles) {
+    FUZZ_CHECK(q.segment >= 0 && q.segment < count && !seen[std::size_t(q.segment)]);
+    seen[std::size_t(q.segment)] = 1;
+    const std::optional<Primitive>& own = primitives[std::size_t(q.segment)];
+    FUZZ_CHECK(own && primitive_is_valid(*own) && has_axis(*own));
+    const auto along = std::find_if(directions.begin(), directions.end(),
+                                    [&](const PartDirection& d) { return d.segment == q.axis_segment; });
+    FUZZ_CHECK(along != directions.end() && q.axis_segment != q.segment);
+    for (const PartDirection& d : directions)
+      FUZZ_CHECK(std::abs(d.direction.dot(own->axis)) < cos_angle);
+    const Primitive& p = q.primitive;
+    FUZZ_CHECK(primitive_is_valid(p) && p.type != PrimitiveType::Sphere);
+    FUZZ_CHECK(std::abs(std::abs(p.axis.dot(along->direction)) - 1) <= 1e-9);
+    FUZZ_CHECK(p.type != PrimitiveType::Torus || p.radius > p.minor_radius);
+    FUZZ_CHECK(std::isfinite(q.rms) && q.rms >= 0);
+    if (std::size_t(q.segment) < types.size() && types[std::size_t(q.segment)])
+      FUZZ_CHECK(*types[std::size_t(q.segment)] == p.type);
+  }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   Decoder in(data, size);
@@ -351,6 +401,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   check_edge_blends(in, r.primitives, samples, contacts, noise);
   check_profiles(in, r.primitives, samples, noise);
+  check_profiles_about_directions(in, r.primitives, samples, noise);
   check_blends_about_axis(in);
   return 0;
 }
