@@ -355,9 +355,11 @@ void PrimitiveFitFilters::logRelations(const QString& name, const FitAllSegments
   if (!r.profiles_about_directions.empty())
     run.logf("%s: %d curved segments whose axis followed none of the part's directions fitted about one:",
         qUtf8Printable(name), int(r.profiles_about_directions.size()));
-  for (std::size_t i = 0; i < r.profiles_about_directions.size() && i < 100; ++i)
-    run.logf("  segment %d, along the normal of segment %d: %s", r.profiles_about_directions[i].segment,
-        r.profiles_about_directions[i].axis_segment, describe_primitive(r.profiles_about_directions[i].primitive).c_str());
+  for (std::size_t i = 0; i < r.profiles_about_directions.size() && i < 100; ++i) {
+    const SegmentProfile& q = r.profiles_about_directions[i];
+    run.logf("  segment %d, along the normal of segment %d: %s", q.segment, q.axis_segment,
+        describe_primitive(q.primitive).c_str());
+  }
   if (!r.profiles.empty())
     run.logf("%s: %d segments turning about a cylinder segment's axis fitted about it:", qUtf8Printable(name),
         int(r.profiles.size()));

@@ -17,9 +17,10 @@ namespace primitive_edit {
 
 namespace {
 
-// Whether a torus about a direction is a round of the part: not a spindle one (its tube through its axis), a short
-// band's noise floor; and its tube's centre circle sags over the points by more than the cap, or it is the cylinder
-// along it (a torus of huge major radius, fit_primitive_auto.h), which does not turn about the direction.
+// Whether a torus about a direction is a round of the part. A spindle torus (its tube through its axis) is a short
+// band's noise floor; one whose tube's centre circle sags less than the cap over the points is the cylinder along
+// that circle (a torus of huge major radius, as fit_primitive_auto.h refuses), which does not turn about the
+// direction.
 bool is_round_about(const Primitive& torus, const FitSample& s, double cap)
 {
   if (!(torus.radius > torus.minor_radius))
@@ -45,9 +46,8 @@ std::optional<SegmentProfile> best_about_directions(int s, const Primitive& mine
   double best_score = own->score;
   std::optional<SegmentProfile> best;
   for (const PartDirection& d : directions) {
-    if (d.segment == s)
-      continue;
-    for (PrimitiveType type : {PrimitiveType::Plane, PrimitiveType::Cylinder, PrimitiveType::Cone, PrimitiveType::Torus}) {
+    for (PrimitiveType type :
+         {PrimitiveType::Plane, PrimitiveType::Cylinder, PrimitiveType::Cone, PrimitiveType::Torus}) {
       if (asked && *asked != type)
         continue;
       const std::optional<Primitive> placed = fit_profile_about_direction(few.points, few.weights, d.direction, type);

@@ -1,8 +1,8 @@
-// Surfaces of revolution about a given direction, the axis placed by the fit (common/fit/fit_profile_about_direction.h),
-// and curved segments refitted about the part's directions (common/relate/fit_profiles_about_directions.h), on the
-// bracket's short hole: a band of a cylinder of radius 2.75 and height 2.75 through a plate whose normal is the
-// part's direction. On a rough scan its own fit tilts; about the direction it is its cylinder. A hole tilted from
-// every direction stays as fitted.
+// Surfaces of revolution about a given direction, the axis placed by the fit
+// (common/fit/fit_profile_about_direction.h), and curved segments refitted about the part's directions
+// (common/relate/fit_profiles_about_directions.h), on the bracket's short hole: a band of a cylinder of radius 2.75
+// and height 2.75 through a plate whose normal is the part's direction. On a rough scan its own fit tilts; about the
+// direction it is its cylinder. A hole tilted from every direction stays as fitted.
 #include "common/fit/fit_primitive.h"
 #include "common/fit/fit_profile_about_direction.h"
 #include "common/geometry/closest_point_on_primitive.h"
@@ -37,10 +37,9 @@ SegmentSamples hole(const Eigen::Vector3d& axis, double sigma, unsigned seed, in
 // A corner's quarter round: the quarter turn of a torus of tube radius 1.5 at major radius 3.5.
 SegmentSamples corner_round(double sigma, unsigned seed)
 {
-  return revolved(kAxisPoint, kDirection,
-                  [](double u) { return Eigen::Vector2d(3.5 + 1.5 * std::cos(0.5 * kPi * u), 1.5 * std::sin(0.5 * kPi * u)); },
-                  [](double u) { return Eigen::Vector2d(std::cos(0.5 * kPi * u), std::sin(0.5 * kPi * u)); }, 800, sigma,
-                  seed, 1, 0.25);
+  const auto out = [](double u) { return Eigen::Vector2d(std::cos(0.5 * kPi * u), std::sin(0.5 * kPi * u)); };
+  const auto profile = [out](double u) -> Eigen::Vector2d { return Eigen::Vector2d(3.5, 0) + 1.5 * out(u); };
+  return revolved(kAxisPoint, kDirection, profile, out, 800, sigma, seed, 1, 0.25);
 }
 
 double off_axis(const Eigen::Vector3d& x) { return test_segments::distance_from_axis(x, kAxisPoint, kDirection); }
@@ -171,8 +170,8 @@ TEST(FitProfilesAboutDirections, TheTypeAskedIsKeptAndBadOptionsChangeNothing)
   const Plate p = plate_with(h, torus.primitive);
   // Asked to be a cone, the hole becomes the cone about the direction that fits it best, though the cylinder scores
   // better.
-  const std::vector<SegmentProfile> cone = fit_profiles_about_directions(p.primitives, p.samples, sigma, 0,
-                                                                         p.directions, 10, {std::nullopt, PrimitiveType::Cone});
+  const std::vector<SegmentProfile> cone = fit_profiles_about_directions(
+      p.primitives, p.samples, sigma, 0, p.directions, 10, {std::nullopt, PrimitiveType::Cone});
   ASSERT_EQ(cone.size(), 1u);
   EXPECT_EQ(cone[0].primitive.type, PrimitiveType::Cone);
   EXPECT_GT(std::abs(cone[0].primitive.axis.dot(kDirection)), 1 - 1e-12);
